@@ -1,0 +1,50 @@
+package org.stagecraft.cli;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+
+import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.recording.trace.TraceFraming;
+
+/** {@code stagecraft decode FILE}: every banner and message of a recording as JSON lines. */
+final class DecodeCommand {
+
+    int run(String[] args, PrintStream out, PrintStream err) {
+        Path file = InputFile.require("decode", args, err);
+        if (file == null) {
+            return 2;
+        }
+        EventJson json = new EventJson(new PlayerDecoder(CodecRegistry.standard()));
+        BufferedWriter w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
+        try {
+            TraceFraming.frame(file, e -> {
+                try {
+                    w.write(json.toJson(e));
+                    w.write('\n');
+                } catch (IOException ex) {
+                    throw new UncheckedIOException(ex);
+                }
+            });
+            w.flush();
+            return 0;
+        } catch (IOException | UncheckedIOException e) {
+            flushQuietly(w);
+            err.println("stagecraft decode: " + e.getMessage());
+            return 1;
+        }
+    }
+
+    private static void flushQuietly(BufferedWriter w) {
+        try {
+            w.flush();
+        } catch (IOException ignored) {
+            // the error being reported matters more than a failed flush
+        }
+    }
+}

@@ -1,0 +1,37 @@
+package org.stagecraft.cli;
+
+import java.io.PrintStream;
+import java.util.Arrays;
+
+/** The {@code stagecraft} command line: headless tools that need no desktop. */
+public final class Main {
+    private static final String USAGE = """
+            usage: stagecraft <command> [arguments]
+              decode FILE   print every banner and Player message of a trace as one JSON object per line
+              stats FILE    count messages per direction, interface, type and subtype
+            """;
+
+    private Main() {
+    }
+
+    public static void main(String[] args) {
+        System.exit(run(args, System.out, System.err));
+    }
+
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        if (args.length == 0 || args[0].equals("-h") || args[0].equals("--help") || args[0].equals("help")) {
+            (args.length == 0 ? err : out).print(USAGE);
+            return args.length == 0 ? 2 : 0;
+        }
+        String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        return switch (args[0]) {
+            case "decode" -> new DecodeCommand().run(rest, out, err);
+            case "stats" -> new StatsCommand().run(rest, out, err);
+            default -> {
+                err.println("stagecraft: unknown command '" + args[0] + "'");
+                err.print(USAGE);
+                yield 2;
+            }
+        };
+    }
+}
