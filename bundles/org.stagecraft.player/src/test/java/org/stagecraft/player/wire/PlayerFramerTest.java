@@ -1,0 +1,173 @@
+package org.stagecraft.player.wire;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.stagecraft.player.Streams.concat;
+import static org.stagecraft.player.Streams.covered;
+import static org.stagecraft.player.Streams.header;
+import static org.stagecraft.player.Streams.message;
+
+import java.util.List;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+import org.stagecraft.player.Streams;
+import org.stagecraft.player.codec.EmptyBody;
+import org.stagecraft.player.codec.RawBody;
+import org.stagecraft.player.xdr.XdrWriter;
+
+class PlayerFramerTest {
+
+    private static final byte[] BANNER = Streams.ident("Player v.3.1.1-dev");
+    private static final byte[] ACK = message(header(1, 0, 4, 5, 0.6), EmptyBody.INSTANCE);
+    private static final byte[] STATE = message(header(4, 0, 1, 1, 0.9), new RawBody(new byte[52]));
+    private static final byte[] BIG = message(header(6, 0, 1, 1, 1.0), new RawBody(new byte[5000]));
+
+    private static byte[] serverStream() {
+        return concat(BANNER, ACK, STATE, BIG, ACK, STATE);
+    }
+
+    @Test
+    void framesBannerAndMessagesOfTheServerStream() {
+        List<WireEvent> events = Streams.frameWhole(Direction.SERVER_TO_CLIENT, serverStream());
+        assertEquals(6, events.size());
+        WireEvent.Banner b = assertInstanceOf(WireEvent.Banner.class, events.get(0));
+        assertEquals("Player v.3.1.1-dev", b.ident());
+        WireEvent.Frame big = assertInstanceOf(WireEvent.Frame.class, events.get(3));
+        assertEquals(5000, big.header().size());
+        assertEquals(32 + 40 + 92, big.offset());
+        assertEquals(6, big.header().interf());
+    }
+
+    @Test
+    void clientStreamHasNoBanner() {
+        List<WireEvent> events = Streams.frameWhole(Direction.CLIENT_TO_SERVER, concat(ACK, STATE));
+        assertEquals(2, events.size());
+        assertInstanceOf(WireEvent.Frame.class, events.get(0));
+    }
+
+    @Test
+    void anyChunkingGivesTheSameEvents() {
+        byte[] stream = serverStream();
+        List<String> whole = Streams.summary(Streams.frameWhole(Direction.SERVER_TO_CLIENT, stream));
+        assertEquals(whole, Streams.summary(Streams.frameByteByByte(Direction.SERVER_TO_CLIENT, stream)));
+        Random random = new Random(42);
+        for (int i = 0; i < 50; i++) {
+            assertEquals(whole, Streams.summary(Streams.frameRandomly(Direction.SERVER_TO_CLIENT, stream, random)));
+        }
+    }
+
+    @Test
+    void aCorruptHeaderIsSkippedReportedAndFramingResumes() {
+        byte[] bad = ACK.clone();
+        bad[19] = 9; // message type 9
+        byte[] stream = concat(BANNER, ACK, bad, STATE, ACK);
+        List<WireEvent> events = Streams.frameWhole(Direction.SERVER_TO_CLIENT, stream);
+        WireEvent.Unframed u = assertInstanceOf(WireEvent.Unframed.class, events.get(2));
+        assertEquals(32 + 40, u.offset());
+        assertTrue(u.reason().contains("message type 9"), u.reason());
+        assertTrue(u.reason().contains("offset 72"), u.reason());
+        assertEquals(40, u.length(), "exactly the corrupt header is skipped");
+        assertInstanceOf(WireEvent.Frame.class, events.get(3));
+        assertEquals(5, events.size());
+        assertArrayEquals(stream, covered(events));
+    }
+
+    @Test
+    void anOversizePayloadIsRefusedWithoutBufferingIt() {
+        byte[] huge = ACK.clone();
+        huge[36] = 0x7F; // size 0x7F000000
+        byte[] stream = concat(BANNER, huge, STATE);
+        List<WireEvent> events = Streams.frameWhole(Direction.SERVER_TO_CLIENT, stream);
+        WireEvent.Unframed u = assertInstanceOf(WireEvent.Unframed.class, events.get(1));
+        assertTrue(u.reason().contains("exceeds Player's limit"), u.reason());
+        assertInstanceOf(WireEvent.Frame.class, events.get(2));
+        assertArrayEquals(stream, covered(events));
+    }
+
+    @Test
+    void aTruncatedStreamReportsTheUnfinishedMessage() {
+        byte[] stream = concat(BANNER, ACK, BIG);
+        byte[] cut = java.util.Arrays.copyOf(stream, stream.length - 100);
+        List<WireEvent> events = Streams.frameWhole(Direction.SERVER_TO_CLIENT, cut);
+        WireEvent.Unframed u = assertInstanceOf(WireEvent.Unframed.class, events.get(2));
+        assertEquals(72, u.offset());
+        assertTrue(u.reason().contains("stream ended inside a message"), u.reason());
+        assertTrue(u.reason().contains("4900 of 5000"), u.reason());
+        assertArrayEquals(cut, covered(events));
+
+        byte[] inHeader = java.util.Arrays.copyOf(stream, 32 + 40 + 10);
+        List<WireEvent> e2 = Streams.frameByteByByte(Direction.SERVER_TO_CLIENT, inHeader);
+        assertTrue(((WireEvent.Unframed) e2.get(2)).reason().contains("inside a message header"));
+        assertArrayEquals(inHeader, covered(e2));
+    }
+
+    @Test
+    void garbageAfterTheBannerIsReportedThenMessagesFollow() {
+        byte[] garbage = "this is not XDR at all, just text!!".getBytes();
+        byte[] stream = concat(BANNER, garbage, ACK, STATE);
+        List<WireEvent> events = Streams.frameByteByByte(Direction.SERVER_TO_CLIENT, stream);
+        assertInstanceOf(WireEvent.Banner.class, events.get(0));
+        WireEvent.Unframed u = assertInstanceOf(WireEvent.Unframed.class, events.get(1));
+        assertEquals(32, u.offset());
+        assertEquals(garbage.length, u.length());
+        assertInstanceOf(WireEvent.Frame.class, events.get(2));
+        assertInstanceOf(WireEvent.Frame.class, events.get(3));
+        assertArrayEquals(stream, covered(events));
+    }
+
+    @Test
+    void aServerStreamWithoutIdentIsReported() {
+        byte[] stream = concat(new byte[32], ACK);
+        List<WireEvent> events = Streams.frameWhole(Direction.SERVER_TO_CLIENT, stream);
+        WireEvent.Unframed u = assertInstanceOf(WireEvent.Unframed.class, events.get(0));
+        assertTrue(u.reason().contains("ident"), u.reason());
+        assertInstanceOf(WireEvent.Frame.class, events.get(1));
+    }
+
+    @Test
+    void longGarbageIsReportedInBoundedPieces() {
+        byte[] garbage = new byte[200_000];
+        java.util.Arrays.fill(garbage, (byte) 0xEE);
+        byte[] stream = concat(garbage, ACK);
+        List<WireEvent> events = Streams.frameWhole(Direction.CLIENT_TO_SERVER, stream);
+        long pieces = events.stream().filter(e -> e instanceof WireEvent.Unframed).count();
+        assertTrue(pieces >= 3, "pieces: " + pieces);
+        events.stream().filter(e -> e instanceof WireEvent.Unframed)
+                .forEach(e -> assertTrue(e.bytes().length <= 64 * 1024));
+        assertInstanceOf(WireEvent.Frame.class, events.get(events.size() - 1));
+        assertArrayEquals(stream, covered(events));
+    }
+
+    @Test
+    void fuzzedStreamsNeverThrowAndNeverLoseBytes() {
+        Random random = new Random(7);
+        byte[] base = serverStream();
+        for (int round = 0; round < 2000; round++) {
+            byte[] s = base.clone();
+            int flips = 1 + random.nextInt(12);
+            for (int i = 0; i < flips; i++) {
+                s[random.nextInt(s.length)] = (byte) random.nextInt(256);
+            }
+            if (random.nextInt(4) == 0) {
+                s = java.util.Arrays.copyOf(s, random.nextInt(s.length));
+            }
+            Direction d = random.nextBoolean() ? Direction.SERVER_TO_CLIENT : Direction.CLIENT_TO_SERVER;
+            List<WireEvent> events = Streams.frameRandomly(d, s, random);
+            assertArrayEquals(s, covered(events), "round " + round);
+        }
+    }
+
+    @Test
+    void headerEncodesBackToItsExactBytes() {
+        byte[] raw = new XdrWriter().int32(0).int32(0).int32(1).int32(0).int32(5).int32(1)
+                .int64(0x0000562BDEADBEEFL).int32(55741367).int32(0).toByteArray();
+        MessageHeader h = MessageHeader.read(raw, 0);
+        XdrWriter w = new XdrWriter();
+        h.write(w);
+        assertArrayEquals(raw, w.toByteArray(), "garbage SYNCH timestamp and seq survive");
+        assertEquals(null, h.problem());
+    }
+}
