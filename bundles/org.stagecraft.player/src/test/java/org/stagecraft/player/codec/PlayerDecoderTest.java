@@ -130,6 +130,12 @@ class PlayerDecoderTest {
         assertEquals("TEMPERATURE", r.subtypeName(300, 1, 1));
     }
 
+    @Test
+    void standardRegistryIncludesServiceLoaderContributions() {
+        assertEquals("odometer", CodecRegistry.standard().interfaceName(400));
+        assertEquals("DISTANCE", CodecRegistry.standard().subtypeName(400, 1, 1));
+    }
+
     record Celsius(double value) implements MessageBody {
         @Override
         public void encode(XdrWriter out) {
