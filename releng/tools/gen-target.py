@@ -647,6 +647,10 @@ def wrap_lines(bsn, name, version, imports, extra=()):
     ] + list(extra)
 
 
+# zstd for the chunks of the spy log (MCAP): an OSGi bundle as published, with the JNI libraries
+# inside (Bundle-NativeCode, linux/amd64 among them).  Pinned: the log format must not move with it.
+ZSTD_JNI_VERSION = "1.5.7-28"
+
 JOGL_VERSION = "2.6.0"
 JOGL = [
     # (groupId, artifactId, classifier, bsn, imports, extra headers)
@@ -765,6 +769,12 @@ def main():
       'includeDependencyScopes="compile" includeSource="false" missingManifest="error">')
     w("      <dependencies>")
     w(dep_xml("com.google.code.gson", "gson", gson))
+    w("      </dependencies>")
+    w("    </location>")
+    w('    <location type="Maven" label="zstd-jni" includeDependencyDepth="none" '
+      'includeDependencyScopes="compile" includeSource="false" missingManifest="error">')
+    w("      <dependencies>")
+    w(dep_xml("com.github.luben", "zstd-jni", ZSTD_JNI_VERSION))
     w("      </dependencies>")
     w("    </location>")
     if not args.no_jogl:
