@@ -1,0 +1,214 @@
+package org.stagecraft.streams;
+
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.LongAdder;
+
+/**
+ * A subscription with its buffer and its drain task. Publishers call {@link #offer}, lock-free and
+ * bounded; at most one drain task runs (or is queued on the executor) at a time.
+ */
+final class BusSubscription implements Subscription {
+    private final StreamBus bus;
+    private final StreamPattern pattern;
+    private final DeliveryPolicy policy;
+    private final StreamConsumer consumer;
+    private final boolean lossless;
+    private final int capacity;
+
+    /** Lossless: FIFO with an explicit size, never more than {@code capacity} messages. */
+    private final ConcurrentLinkedQueue<StreamMessage> fifo;
+    private final AtomicInteger size = new AtomicInteger();
+    /** Latest-value: the newest undelivered message per stream. */
+    private final ConcurrentHashMap<StreamKey, StreamMessage> latest;
+
+    private final AtomicBoolean scheduled = new AtomicBoolean();
+    private final LongAdder delivered = new LongAdder();
+    private final LongAdder dropped = new LongAdder();
+    private final LongAdder failures = new LongAdder();
+    private volatile Throwable lastFailure;
+    private volatile boolean closed;
+
+    BusSubscription(StreamBus bus, StreamPattern pattern, DeliveryPolicy policy, StreamConsumer consumer) {
+        this.bus = bus;
+        this.pattern = pattern;
+        this.policy = policy;
+        this.consumer = consumer;
+        this.lossless = policy.isLossless();
+        this.capacity = policy.capacity();
+        this.fifo = lossless ? new ConcurrentLinkedQueue<>() : null;
+        this.latest = lossless ? null : new ConcurrentHashMap<>();
+    }
+
+    /** Called by publishers: buffer (or drop and count) and make sure a drain task is pending. */
+    void offer(StreamMessage m) {
+        if (closed) {
+            return;
+        }
+        if (lossless) {
+            if (size.incrementAndGet() > capacity) {
+                size.decrementAndGet();
+                dropped.increment();
+                return;
+            }
+            fifo.offer(m);
+        } else if (latest.put(m.key(), m) != null) {
+            dropped.increment(); // superseded before delivery
+        }
+        schedule();
+    }
+
+    private void schedule() {
+        if (scheduled.compareAndSet(false, true)) {
+            submit();
+        }
+    }
+
+    private void submit() {
+        try {
+            bus.executor().execute(this::drain);
+        } catch (RuntimeException rejected) { // executor shut down (bus closed) or display disposed
+            scheduled.set(false);
+            if (!closed) {
+                failures.increment();
+                lastFailure = rejected;
+            }
+        }
+    }
+
+    private void drain() {
+        int budget = StreamBus.BATCH;
+        for (;;) {
+            budget -= lossless ? drainFifo(budget) : drainLatest();
+            if (closed) {
+                scheduled.set(false);
+                discard();
+                return;
+            }
+            if (budget <= 0 && !isEmpty()) {
+                submit(); // still scheduled: let other tasks of the executor run first
+                return;
+            }
+            scheduled.set(false);
+            // a publisher may have offered after the last poll but seen scheduled == true
+            if (isEmpty() || !scheduled.compareAndSet(false, true)) {
+                return;
+            }
+        }
+    }
+
+    private int drainFifo(int budget) {
+        int n = 0;
+        StreamMessage m;
+        while (n < budget && !closed && (m = fifo.poll()) != null) {
+            size.decrementAndGet();
+            deliver(m);
+            n++;
+        }
+        return n;
+    }
+
+    /** One pass: the newest message of each stream that has one. */
+    private int drainLatest() {
+        int n = 0;
+        for (StreamKey k : latest.keySet()) {
+            if (closed) {
+                break;
+            }
+            StreamMessage m = latest.remove(k);
+            if (m != null) {
+                deliver(m);
+                n++;
+            }
+        }
+        return n;
+    }
+
+    private void deliver(StreamMessage m) {
+        try {
+            consumer.accept(m);
+        } catch (Throwable t) {
+            failures.increment();
+            lastFailure = t;
+        } finally {
+            delivered.increment();
+        }
+    }
+
+    /** Messages buffered now (for tests: the memory bound). */
+    int pending() {
+        return lossless ? size.get() : latest.size();
+    }
+
+    private boolean isEmpty() {
+        return lossless ? fifo.isEmpty() : latest.isEmpty();
+    }
+
+    private void discard() {
+        if (lossless) {
+            while (fifo.poll() != null) {
+                size.decrementAndGet();
+                dropped.increment();
+            }
+        } else {
+            for (StreamKey k : latest.keySet()) {
+                if (latest.remove(k) != null) {
+                    dropped.increment();
+                }
+            }
+        }
+    }
+
+    @Override
+    public StreamPattern pattern() {
+        return pattern;
+    }
+
+    @Override
+    public DeliveryPolicy policy() {
+        return policy;
+    }
+
+    @Override
+    public long delivered() {
+        return delivered.sum();
+    }
+
+    @Override
+    public long dropped() {
+        return dropped.sum();
+    }
+
+    @Override
+    public long failures() {
+        return failures.sum();
+    }
+
+    @Override
+    public Throwable lastFailure() {
+        return lastFailure;
+    }
+
+    @Override
+    public boolean isClosed() {
+        return closed;
+    }
+
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        bus.unsubscribe(this);
+        discard();
+    }
+
+    @Override
+    public String toString() {
+        return "Subscription[" + pattern + ", " + policy + ", delivered=" + delivered() + ", dropped=" + dropped()
+                + ", failures=" + failures() + (closed ? ", closed" : "") + "]";
+    }
+}
