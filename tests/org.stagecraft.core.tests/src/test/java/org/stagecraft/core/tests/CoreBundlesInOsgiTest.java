@@ -34,6 +34,12 @@ class CoreBundlesInOsgiTest {
     }
 
     @Test
+    void streamsBundleIsResolved() {
+        Bundle streams = bundle("org.stagecraft.streams");
+        assertTrue(resolved(streams), "org.stagecraft.streams state " + streams.getState());
+    }
+
+    @Test
     void coreBundleIsActive() throws Exception {
         Bundle core = bundle("org.stagecraft.core");
         assertTrue(resolved(core), "org.stagecraft.core state " + core.getState());
