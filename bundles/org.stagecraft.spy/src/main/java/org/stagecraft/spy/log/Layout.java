@@ -1,0 +1,128 @@
+package org.stagecraft.spy.log;
+
+import java.nio.charset.StandardCharsets;
+import java.util.Map;
+
+import org.stagecraft.player.wire.Direction;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+
+/**
+ * The spy log's layout inside MCAP: its schemas, channels and the encoding of its message data. See
+ * docs/spy-log.md.
+ */
+final class Layout {
+    private Layout() {
+    }
+
+    static final String PROFILE = "x-stagecraft-spy";
+    static final String LIBRARY = "stagecraft spy log 1";
+
+    static final int SCHEMA_WIRE = 1;
+    static final String SCHEMA_WIRE_NAME = "player.Message";
+    static final int SCHEMA_EVENT = 2;
+    static final String SCHEMA_EVENT_NAME = "stagecraft.SpyEvent";
+
+    static final String WIRE_ENCODING = "x-player-xdr";
+    static final String EVENT_ENCODING = "json";
+
+    static final int CHANNEL_EVENTS = 1;
+    static final String TOPIC_EVENTS = "/events";
+    static final int FIRST_WIRE_CHANNEL = 2;
+
+    static final String METADATA_SESSION = "stagecraft.session";
+
+    /** offset u64, kind u8, reason length u16 */
+    static final int WIRE_PREFIX = 8 + 1 + 2;
+
+    static final String EVENT_SCHEMA_JSON = """
+            {"$schema":"https://json-schema.org/draft/2020-12/schema","title":"Stagecraft spy event",\
+            "type":"object","required":["event","conn"],\
+            "properties":{"event":{"type":"string","enum":["opened","closed","diagnostic"]},\
+            "conn":{"type":"integer"},"client":{"type":"string"},"listen":{"type":"string"},\
+            "upstream":{"type":"string"},"reason":{"type":"string"},\
+            "dir":{"type":"string","enum":["c2s","s2c"]},"offset":{"type":"integer"},"text":{"type":"string"}}}""";
+
+    static String wireTopic(int conn, int port, Direction dir) {
+        return "/wire/" + conn + "/" + port + "/" + dir.label();
+    }
+
+    static Map<String, String> wireChannelMetadata(int conn, int port, Direction dir) {
+        return Map.of("conn", Integer.toString(conn), "port", Integer.toString(port), "dir", dir.label());
+    }
+
+    static int kindCode(LogEntry.Kind k) {
+        return k.ordinal() + 1;
+    }
+
+    static LogEntry.Kind kind(int code) throws SpyLogFormatException {
+        LogEntry.Kind[] all = LogEntry.Kind.values();
+        if (code < 1 || code > all.length) {
+            throw new SpyLogFormatException("unknown wire record kind " + code);
+        }
+        return all[code - 1];
+    }
+
+    static byte[] utf8(String s) {
+        return s.getBytes(StandardCharsets.UTF_8);
+    }
+
+    // --- events (JSON) ---------------------------------------------------------------------------
+
+    static byte[] opened(int conn, String client, String listen, String upstream) {
+        JsonObject o = new JsonObject();
+        o.addProperty("event", "opened");
+        o.addProperty("conn", conn);
+        o.addProperty("client", nz(client));
+        o.addProperty("listen", nz(listen));
+        o.addProperty("upstream", nz(upstream));
+        return utf8(o.toString());
+    }
+
+    static byte[] closed(int conn, String reason) {
+        JsonObject o = new JsonObject();
+        o.addProperty("event", "closed");
+        o.addProperty("conn", conn);
+        o.addProperty("reason", nz(reason));
+        return utf8(o.toString());
+    }
+
+    static byte[] diagnostic(int conn, Direction dir, long offset, String text) {
+        JsonObject o = new JsonObject();
+        o.addProperty("event", "diagnostic");
+        o.addProperty("conn", conn);
+        if (dir != null) {
+            o.addProperty("dir", dir.label());
+        }
+        o.addProperty("offset", offset);
+        o.addProperty("text", nz(text));
+        return utf8(o.toString());
+    }
+
+    static LogEntry event(long time, byte[] data, int off, int len) throws SpyLogFormatException {
+        try {
+            JsonObject o = JsonParser.parseString(new String(data, off, len, StandardCharsets.UTF_8)).getAsJsonObject();
+            String ev = o.get("event").getAsString();
+            int conn = o.get("conn").getAsInt();
+            return switch (ev) {
+                case "opened" -> new LogEntry.Opened(time, conn, str(o, "client"), str(o, "listen"), str(o, "upstream"));
+                case "closed" -> new LogEntry.Closed(time, conn, str(o, "reason"));
+                case "diagnostic" -> new LogEntry.Diagnostic(time, conn,
+                        o.has("dir") ? Direction.fromLabel(o.get("dir").getAsString()) : null,
+                        o.has("offset") ? o.get("offset").getAsLong() : -1, str(o, "text"));
+                default -> throw new SpyLogFormatException("unknown event \"" + ev + "\"");
+            };
+        } catch (RuntimeException e) {
+            throw new SpyLogFormatException("an event is not the JSON this log writes (" + e.getMessage() + ")", e);
+        }
+    }
+
+    private static String str(JsonObject o, String key) {
+        return o.has(key) && !o.get(key).isJsonNull() ? o.get(key).getAsString() : "";
+    }
+
+    private static String nz(String s) {
+        return s == null ? "" : s;
+    }
+}
