@@ -10,7 +10,6 @@ import java.nio.file.Path;
 
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
-import org.stagecraft.recording.trace.TraceFraming;
 
 /** {@code stagecraft decode FILE}: every banner and message of a recording as JSON lines. */
 final class DecodeCommand {
@@ -23,7 +22,7 @@ final class DecodeCommand {
         EventJson json = new EventJson(new PlayerDecoder(CodecRegistry.standard()));
         BufferedWriter w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
         try {
-            TraceFraming.frame(file, e -> {
+            Recordings.frame(file, e -> {
                 try {
                     w.write(json.toJson(e));
                     w.write('\n');

@@ -13,7 +13,6 @@ import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.player.wire.WireEvent;
-import org.stagecraft.recording.trace.TraceFraming;
 
 /** {@code stagecraft stats FILE}: message counts and bytes per direction, interface, type, subtype. */
 final class StatsCommand {
@@ -40,7 +39,7 @@ final class StatsCommand {
         Map<Key, Tally> counts = new TreeMap<>();
         long[] totals = new long[5]; // messages, bytes, banners, unframed bytes, decode problems
         try {
-            TraceFraming.frame(file, (SessionEvent e) -> {
+            Recordings.frame(file, (SessionEvent e) -> {
                 switch (e.event()) {
                     case WireEvent.Banner b -> totals[2]++;
                     case WireEvent.Unframed u -> totals[3] += u.length();
