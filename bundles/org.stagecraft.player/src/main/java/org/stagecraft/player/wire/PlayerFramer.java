@@ -105,6 +105,38 @@ public final class PlayerFramer {
         state = State.HEADER;
     }
 
+    /**
+     * Some bytes of the stream were never seen by this framer (an observer fell behind and had to
+     * drop them). What was being assembled is reported as unframed, the offset moves past the gap,
+     * and framing resumes by looking for the next plausible header.
+     */
+    public void gap(long lostBytes, String why) {
+        if (lostBytes <= 0) {
+            return;
+        }
+        if (state == State.PAYLOAD) {
+            byte[] partial = new byte[MessageHeader.SIZE + pendingLength];
+            System.arraycopy(headerBytes, 0, partial, 0, MessageHeader.SIZE);
+            System.arraycopy(pending, 0, partial, MessageHeader.SIZE, pendingLength);
+            skip(itemOffset, partial, 0, partial.length, "message cut by a gap in observation: " + why);
+            itemOffset += partial.length;
+        } else if (pendingLength > 0) {
+            skip(itemOffset, pending, 0, pendingLength, "bytes cut by a gap in observation: " + why);
+            itemOffset += pendingLength;
+        }
+        flushSkipped();
+        pendingLength = 0;
+        header = null;
+        headerBytes = null;
+        itemOffset += lostBytes;
+        state = State.HEADER;
+    }
+
+    /** Offset in the stream of the next byte this framer expects. */
+    public long nextOffset() {
+        return itemOffset + pendingLength + (state == State.PAYLOAD ? MessageHeader.SIZE : 0);
+    }
+
     public long framedMessages() {
         return framedMessages;
     }

@@ -161,6 +161,28 @@ class PlayerFramerTest {
     }
 
     @Test
+    void aGapInObservationReportsTheCutMessageAndResumesAtTheRightOffset() {
+        byte[] stream = concat(BANNER, ACK, BIG, STATE, ACK);
+        List<WireEvent> events = new java.util.ArrayList<>();
+        PlayerFramer f = new PlayerFramer(Direction.SERVER_TO_CLIENT, events::add);
+        int cut = 32 + 40 + 1000; // inside BIG's payload
+        f.accept(stream, 0, cut);
+        int resume = 32 + 40 + BIG.length; // the observer lost the rest of BIG
+        f.gap(resume - cut, "observer queue full");
+        assertEquals(resume, f.nextOffset());
+        f.accept(stream, resume, stream.length - resume);
+        f.end();
+        WireEvent.Unframed u = assertInstanceOf(WireEvent.Unframed.class, events.get(2));
+        assertEquals(72, u.offset());
+        assertEquals(1000, u.length());
+        assertTrue(u.reason().contains("observer queue full"), u.reason());
+        WireEvent.Frame next = assertInstanceOf(WireEvent.Frame.class, events.get(3));
+        assertEquals(resume, next.offset());
+        assertEquals(4, next.header().interf());
+        assertEquals(5, events.size());
+    }
+
+    @Test
     void headerEncodesBackToItsExactBytes() {
         byte[] raw = new XdrWriter().int32(0).int32(0).int32(1).int32(0).int32(5).int32(1)
                 .int64(0x0000562BDEADBEEFL).int32(55741367).int32(0).toByteArray();

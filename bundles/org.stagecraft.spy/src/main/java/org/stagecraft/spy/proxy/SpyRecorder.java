@@ -1,0 +1,27 @@
+package org.stagecraft.spy.proxy;
+
+import java.io.IOException;
+
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.player.wire.WireEvent;
+
+/**
+ * Where the spy records a session (the MCAP spy log). Called on the observation thread only. An
+ * IOException (e.g. a full disk) stops recording; forwarding and publishing go on.
+ */
+public interface SpyRecorder extends AutoCloseable {
+    void opened(ConnectionInfo connection, long timeNanos) throws IOException;
+
+    void closed(ConnectionInfo connection, long timeNanos, String reason) throws IOException;
+
+    void wire(ConnectionInfo connection, Direction dir, WireEvent event, long timeNanos) throws IOException;
+
+    void diagnostic(ConnectionInfo connection, Direction dir, long streamOffset, String text, long timeNanos)
+            throws IOException;
+
+    /** Makes what was recorded so far durable (called about once a second). */
+    void flush() throws IOException;
+
+    @Override
+    void close() throws IOException;
+}

@@ -1,0 +1,31 @@
+package org.stagecraft.spy.proxy;
+
+import org.stagecraft.player.wire.Direction;
+
+/**
+ * Sees what the spy forwards, after it has been forwarded. Called on the forwarding threads, so
+ * implementations must return at once: they may copy and queue, never wait.
+ */
+public interface WireObserver {
+    void opened(ConnectionInfo connection, long timeNanos);
+
+    /** A chunk exactly as one read returned it; the array belongs to the observer. */
+    void chunk(ConnectionInfo connection, Direction dir, byte[] data, long timeNanos);
+
+    /** Both directions have ended (closed, reset, or the upstream refused). */
+    void closed(ConnectionInfo connection, long timeNanos, String reason);
+
+    WireObserver NONE = new WireObserver() {
+        @Override
+        public void opened(ConnectionInfo connection, long timeNanos) {
+        }
+
+        @Override
+        public void chunk(ConnectionInfo connection, Direction dir, byte[] data, long timeNanos) {
+        }
+
+        @Override
+        public void closed(ConnectionInfo connection, long timeNanos, String reason) {
+        }
+    };
+}

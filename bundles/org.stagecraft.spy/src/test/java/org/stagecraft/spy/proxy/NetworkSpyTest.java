@@ -1,0 +1,318 @@
+package org.stagecraft.spy.proxy;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.stagecraft.player.wire.Direction;
+
+/** The relay itself: bytes unchanged and in order, half-close, resets, refusal, binding. */
+@Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class NetworkSpyTest {
+    private final List<AutoCloseable> cleanup = new ArrayList<>();
+    /**
+     * Peers block in socket reads; on a small machine the common pool has a single worker, so
+     * every peer gets its own virtual thread instead.
+     */
+    private final ExecutorService peers = Executors.newVirtualThreadPerTaskExecutor();
+
+    private <T> CompletableFuture<T> async(java.util.function.Supplier<T> task) {
+        return CompletableFuture.supplyAsync(task, peers);
+    }
+
+    private CompletableFuture<Void> run(Runnable task) {
+        return CompletableFuture.runAsync(task, peers);
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        for (AutoCloseable c : cleanup) {
+            c.close();
+        }
+        peers.shutdownNow();
+    }
+
+    private ServerSocket upstream() throws IOException {
+        ServerSocket s = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
+        cleanup.add(s);
+        return s;
+    }
+
+    private NetworkSpy spy(ServerSocket upstream, WireObserver observer) throws IOException {
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", upstream.getLocalPort())), observer);
+        cleanup.add(spy);
+        spy.start();
+        return spy;
+    }
+
+    private Socket connect(NetworkSpy spy) throws IOException {
+        Socket s = new Socket();
+        cleanup.add(s);
+        s.connect(spy.boundAddresses().get(0));
+        return s;
+    }
+
+    private static byte[] random(int n, long seed) {
+        byte[] b = new byte[n];
+        new Random(seed).nextBytes(b);
+        return b;
+    }
+
+    @Test
+    void forwardsBothDirectionsUnchangedAndInOrderWithHalfClose() throws Exception {
+        ServerSocket up = upstream();
+        byte[] toServer = random(3_000_000, 1);
+        byte[] toClient = random(2_000_000, 2);
+        CompletableFuture<byte[]> serverGot = async(() -> {
+            try (Socket s = up.accept()) {
+                CompletableFuture<Void> send = run(() -> {
+                    try {
+                        s.getOutputStream().write(toClient);
+                        s.shutdownOutput();
+                    } catch (IOException e) {
+                        throw new IllegalStateException(e);
+                    }
+                });
+                byte[] got = s.getInputStream().readAllBytes(); // ends at the client's half-close
+                send.join();
+                return got;
+            } catch (IOException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        RecordingObserver observer = new RecordingObserver();
+        NetworkSpy spy = spy(up, observer);
+        Socket client = connect(spy);
+        CompletableFuture<Void> send = run(() -> {
+            try {
+                client.getOutputStream().write(toServer);
+                client.shutdownOutput();
+            } catch (IOException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        byte[] clientGot = client.getInputStream().readAllBytes();
+        send.join();
+        assertArrayEquals(toServer, serverGot.get(30, TimeUnit.SECONDS));
+        assertArrayEquals(toClient, clientGot);
+        assertTrue(observer.closed.await(10, TimeUnit.SECONDS));
+        assertArrayEquals(toServer, observer.bytes(Direction.CLIENT_TO_SERVER), "observer sees what was forwarded");
+        assertArrayEquals(toClient, observer.bytes(Direction.SERVER_TO_CLIENT));
+        assertEquals(toServer.length, spy.bytesForwarded(Direction.CLIENT_TO_SERVER));
+        assertEquals("closed", observer.reason);
+        assertEquals(0, spy.openConnections());
+    }
+
+    @Test
+    void halfCloseByTheClientStillLetsTheServerAnswer() throws Exception {
+        ServerSocket up = upstream();
+        CompletableFuture<Void> server = run(() -> {
+            try (Socket s = up.accept()) {
+                byte[] req = s.getInputStream().readAllBytes(); // waits for the client's FIN
+                s.getOutputStream().write(("echo:" + new String(req)).getBytes());
+            } catch (IOException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        Socket client = connect(spy(up, WireObserver.NONE));
+        client.getOutputStream().write("ping".getBytes());
+        client.shutdownOutput();
+        assertEquals("echo:ping", new String(client.getInputStream().readAllBytes()));
+        server.get(10, TimeUnit.SECONDS);
+    }
+
+    @Test
+    void anUpstreamResetResetsTheClient() throws Exception {
+        ServerSocket up = upstream();
+        run(() -> {
+            try {
+                Socket s = up.accept();
+                s.getInputStream().read();
+                s.setSoLinger(true, 0);
+                s.close(); // RST
+            } catch (IOException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        RecordingObserver observer = new RecordingObserver();
+        Socket client = connect(spy(up, observer));
+        client.getOutputStream().write(1);
+        InputStream in = client.getInputStream();
+        assertThrows(SocketException.class, () -> {
+            while (in.read() >= 0) {
+                // a reset must surface as an exception, not as an orderly end
+            }
+        });
+        assertTrue(observer.closed.await(10, TimeUnit.SECONDS));
+        assertTrue(observer.reason.startsWith("upstream side failed"), observer.reason);
+    }
+
+    @Test
+    void aRefusingUpstreamResetsTheClient() throws Exception {
+        ServerSocket up = upstream();
+        int deadPort = up.getLocalPort();
+        up.close(); // nothing listens there now
+        RecordingObserver observer = new RecordingObserver();
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", deadPort)), observer);
+        cleanup.add(spy);
+        spy.start();
+        Socket client = connect(spy);
+        assertThrows(SocketException.class, () -> client.getInputStream().read());
+        assertTrue(observer.closed.await(10, TimeUnit.SECONDS));
+        assertTrue(observer.reason.contains("refused"), observer.reason);
+        assertTrue(observer.reason.contains(":" + deadPort), observer.reason);
+    }
+
+    @Test
+    void bindsLoopbackByDefaultAndNamesAPortInUse() throws Exception {
+        ServerSocket up = upstream();
+        NetworkSpy spy = spy(up, WireObserver.NONE);
+        InetSocketAddress bound = spy.boundAddresses().get(0);
+        assertTrue(bound.getAddress().isLoopbackAddress(), bound.toString());
+
+        NetworkSpy clash = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", 7000),
+                Route.loopback(bound.getPort(), "127.0.0.1", 7001)), WireObserver.NONE);
+        IOException e = assertThrows(IOException.class, clash::start);
+        assertTrue(e.getMessage().contains("127.0.0.1:" + bound.getPort()), e.getMessage());
+        assertTrue(clash.boundAddresses().isEmpty(), "nothing stays bound after a failed start");
+    }
+
+    @Test
+    void anObserverThatThrowsCannotStopTheBytes() throws Exception {
+        ServerSocket up = upstream();
+        CompletableFuture<byte[]> server = async(() -> {
+            try (Socket s = up.accept()) {
+                return s.getInputStream().readAllBytes();
+            } catch (IOException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        WireObserver broken = new WireObserver() {
+            @Override
+            public void opened(ConnectionInfo c, long t) {
+                throw new IllegalStateException("bug");
+            }
+
+            @Override
+            public void chunk(ConnectionInfo c, Direction d, byte[] data, long t) {
+                throw new IllegalStateException("bug");
+            }
+
+            @Override
+            public void closed(ConnectionInfo c, long t, String r) {
+            }
+        };
+        NetworkSpy spy = spy(up, broken);
+        Socket client = connect(spy);
+        byte[] data = random(500_000, 3);
+        client.getOutputStream().write(data);
+        client.shutdownOutput();
+        assertArrayEquals(data, server.get(20, TimeUnit.SECONDS));
+        assertTrue(spy.observerFailures() >= 2);
+    }
+
+    @Test
+    void manyRoutesAndClientsAtOnce() throws Exception {
+        int routes = 6;
+        List<Route> list = new ArrayList<>();
+        List<ServerSocket> ups = new ArrayList<>();
+        for (int i = 0; i < routes; i++) {
+            ServerSocket up = upstream();
+            ups.add(up);
+            list.add(Route.loopback(0, "127.0.0.1", up.getLocalPort()));
+            Thread.ofVirtual().start(() -> {
+                while (!up.isClosed()) {
+                    try {
+                        Socket s = up.accept();
+                        Thread.ofVirtual().start(() -> {
+                            try (s) {
+                                s.getInputStream().transferTo(s.getOutputStream()); // echo
+                            } catch (IOException ignored) {
+                                // test peer
+                            }
+                        });
+                    } catch (IOException e) {
+                        return;
+                    }
+                }
+            });
+        }
+        NetworkSpy spy = new NetworkSpy(list, WireObserver.NONE);
+        cleanup.add(spy);
+        spy.start();
+        List<CompletableFuture<Boolean>> clients = new ArrayList<>();
+        for (int i = 0; i < routes * 5; i++) {
+            InetSocketAddress at = spy.boundAddresses().get(i % routes);
+            byte[] data = random(100_000, i);
+            clients.add(async(() -> {
+                try (Socket s = new Socket()) {
+                    s.connect(at);
+                    CompletableFuture<Void> w = run(() -> {
+                        try {
+                            s.getOutputStream().write(data);
+                            s.shutdownOutput();
+                        } catch (IOException e) {
+                            throw new IllegalStateException(e);
+                        }
+                    });
+                    byte[] back = s.getInputStream().readAllBytes();
+                    w.join();
+                    return java.util.Arrays.equals(data, back);
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+            }));
+        }
+        for (CompletableFuture<Boolean> c : clients) {
+            assertTrue(c.get(30, TimeUnit.SECONDS));
+        }
+        assertEquals(routes * 5L, spy.totalConnections());
+    }
+
+    /** Keeps what it is told, for assertions. */
+    static final class RecordingObserver implements WireObserver {
+        final java.io.ByteArrayOutputStream c2s = new java.io.ByteArrayOutputStream();
+        final java.io.ByteArrayOutputStream s2c = new java.io.ByteArrayOutputStream();
+        final CountDownLatch closed = new CountDownLatch(1);
+        volatile String reason;
+
+        @Override
+        public void opened(ConnectionInfo connection, long timeNanos) {
+        }
+
+        @Override
+        public synchronized void chunk(ConnectionInfo connection, Direction dir, byte[] data, long timeNanos) {
+            (dir == Direction.CLIENT_TO_SERVER ? c2s : s2c).writeBytes(data);
+        }
+
+        @Override
+        public void closed(ConnectionInfo connection, long timeNanos, String reason) {
+            this.reason = reason;
+            closed.countDown();
+        }
+
+        synchronized byte[] bytes(Direction dir) {
+            return (dir == Direction.CLIENT_TO_SERVER ? c2s : s2c).toByteArray();
+        }
+    }
+}

@@ -1,0 +1,295 @@
+package org.stagecraft.spy.proxy;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.Executor;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.player.codec.PlayerEncoder;
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.recording.trace.TraceReader;
+import org.stagecraft.recording.trace.TraceRecord;
+import org.stagecraft.streams.DeliveryPolicy;
+import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamMessage;
+import org.stagecraft.streams.StreamPattern;
+
+/** Recorded Player traffic replayed through a live spy: decoded, published, recorded; and what happens under load. */
+@Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class ObservationPipelineTest {
+    /** Peers block in socket reads: each gets a virtual thread (the common pool may have one worker). */
+    private static final Executor PEERS = Executors.newVirtualThreadPerTaskExecutor();
+    private static final PlayerDecoder DECODER = new PlayerDecoder(CodecRegistry.standard());
+    private final List<AutoCloseable> cleanup = new ArrayList<>();
+
+    @AfterEach
+    void close() throws Exception {
+        Collections.reverse(cleanup);
+        for (AutoCloseable c : cleanup) {
+            c.close();
+        }
+    }
+
+    private static Path trace(String name) {
+        String dir = System.getProperty("stagecraft.traces");
+        assertNotNull(dir, "-Dstagecraft.traces must name shared/traces");
+        return Path.of(dir, name);
+    }
+
+    /** The two byte streams of a one-connection recording. */
+    private static byte[][] streams(Path trace) throws IOException {
+        ByteArrayOutputStream c2s = new ByteArrayOutputStream();
+        ByteArrayOutputStream s2c = new ByteArrayOutputStream();
+        try (TraceReader r = new TraceReader(trace)) {
+            for (TraceRecord rec = r.next(); rec != null; rec = r.next()) {
+                if (rec instanceof TraceRecord.Chunk c && c.stream().conn() == 1) {
+                    (c.stream().dir() == Direction.CLIENT_TO_SERVER ? c2s : s2c).writeBytes(c.data());
+                }
+            }
+        }
+        return new byte[][] {c2s.toByteArray(), s2c.toByteArray()};
+    }
+
+    private static List<WireEvent.Frame> frames(byte[] stream, Direction dir) {
+        List<WireEvent.Frame> out = new ArrayList<>();
+        org.stagecraft.player.wire.PlayerFramer f = new org.stagecraft.player.wire.PlayerFramer(dir, e -> {
+            if (e instanceof WireEvent.Frame fr) {
+                out.add(fr);
+            }
+        });
+        f.accept(stream);
+        f.end();
+        return out;
+    }
+
+    /** A stand-in Player: sends the recorded server stream and reads whatever the client sends. */
+    private ServerSocket fakePlayer(byte[] s2c, CompletableFuture<byte[]> received) throws IOException {
+        ServerSocket up = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
+        cleanup.add(up);
+        Thread.ofVirtual().start(() -> {
+            try (Socket s = up.accept()) {
+                CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
+                    try {
+                        s.getOutputStream().write(s2c);
+                        s.shutdownOutput();
+                    } catch (IOException e) {
+                        throw new IllegalStateException(e);
+                    }
+                }, PEERS);
+                received.complete(s.getInputStream().readAllBytes());
+                w.join();
+            } catch (IOException e) {
+                received.completeExceptionally(e);
+            }
+        });
+        return up;
+    }
+
+    /** A robot program replaying the recorded client stream; returns what it received. */
+    private static byte[] robotProgram(NetworkSpy spy, byte[] c2s) throws IOException {
+        try (Socket s = new Socket()) {
+            s.connect(spy.boundAddresses().get(0));
+            CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
+                try {
+                    s.getOutputStream().write(c2s);
+                    s.shutdownOutput();
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+            }, PEERS);
+            byte[] got = s.getInputStream().readAllBytes();
+            w.join();
+            return got;
+        }
+    }
+
+    @Test
+    void recordedSessionThroughTheSpyIsForwardedExactlyAndPublishedMessageByMessage() throws Exception {
+        byte[][] rec = streams(trace("pioneer-laser-sonar.gt.trace.jsonl"));
+        List<WireEvent.Frame> expectedC2S = frames(rec[0], Direction.CLIENT_TO_SERVER);
+        List<WireEvent.Frame> expectedS2C = frames(rec[1], Direction.SERVER_TO_CLIENT);
+        int expected = expectedC2S.size() + expectedS2C.size();
+
+        StreamBus bus = new StreamBus();
+        cleanup.add(bus);
+        List<StreamMessage> seen = Collections.synchronizedList(new ArrayList<>());
+        CountDownLatch all = new CountDownLatch(expected);
+        bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(expected * 2), m -> {
+            if (m.payload() instanceof SpyMessage) {
+                seen.add(m);
+                all.countDown();
+            }
+        });
+        RecordingRecorder recorder = new RecordingRecorder();
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, recorder, 64 << 20);
+        cleanup.add(pipeline);
+        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
+        ServerSocket player = fakePlayer(rec[1], playerGot);
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
+        cleanup.add(spy);
+        spy.start();
+
+        byte[] robotGot = robotProgram(spy, rec[0]);
+        assertArrayEquals(rec[1], robotGot, "the robot program saw exactly what Player sent");
+        assertArrayEquals(rec[0], playerGot.get(20, TimeUnit.SECONDS), "Player saw exactly what the program sent");
+        assertTrue(all.await(20, TimeUnit.SECONDS), "published " + seen.size() + " of " + expected);
+
+        List<StreamMessage> s2c = seen.stream()
+                .filter(m -> ((SpyMessage) m.payload()).dir() == Direction.SERVER_TO_CLIENT).toList();
+        assertEquals(expectedS2C.size(), s2c.size());
+        for (int i = 0; i < s2c.size(); i++) {
+            SpyMessage sm = (SpyMessage) s2c.get(i).payload();
+            assertEquals(expectedS2C.get(i).offset(), sm.streamOffset());
+            assertArrayEquals(expectedS2C.get(i).bytes(), PlayerEncoder.encode(sm.message()));
+            assertEquals(sm.message().header().interf(), s2c.get(i).key().deviceType());
+            assertEquals(sm.connection().listen(), s2c.get(i).key().source(), "server messages come from the Player port");
+        }
+        assertEquals(0, pipeline.decodeProblems());
+        assertEquals(0, pipeline.droppedBytes());
+        assertTrue(recorder.closedSeen.await(10, TimeUnit.SECONDS));
+        assertArrayEquals(rec[1], recorder.bytes(Direction.SERVER_TO_CLIENT), "the log can rebuild the stream");
+        assertArrayEquals(rec[0], recorder.bytes(Direction.CLIENT_TO_SERVER));
+    }
+
+    @Test
+    void aStuckObserverNeverDelaysTheWireAndTheGapIsReported() throws Exception {
+        byte[][] rec = streams(trace("rates.headless-push.trace.jsonl"));
+        StreamBus bus = new StreamBus();
+        cleanup.add(bus);
+        List<SpyDiagnostic> diagnostics = Collections.synchronizedList(new ArrayList<>());
+        CountDownLatch gapReported = new CountDownLatch(1);
+        bus.subscribe(StreamPattern.any().messageType(ObservationPipeline.DIAGNOSTIC_TYPE), DeliveryPolicy.lossless(10_000),
+                m -> {
+                    SpyDiagnostic d = (SpyDiagnostic) m.payload();
+                    diagnostics.add(d);
+                    if (d.text().contains("not observed")) {
+                        gapReported.countDown();
+                    }
+                });
+        CountDownLatch release = new CountDownLatch(1);
+        RecordingRecorder stuck = new RecordingRecorder() {
+            @Override
+            public void wire(ConnectionInfo c, Direction dir, WireEvent e, long t) throws IOException {
+                try {
+                    release.await(); // a log on a disk that hangs
+                } catch (InterruptedException ex) {
+                    Thread.currentThread().interrupt();
+                }
+                super.wire(c, dir, e, t);
+            }
+        };
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, stuck, 256 * 1024);
+        cleanup.add(pipeline);
+        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
+        ServerSocket player = fakePlayer(rec[1], playerGot);
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
+        cleanup.add(spy);
+        spy.start();
+
+        byte[] robotGot = robotProgram(spy, rec[0]); // completes although observation is stuck
+        assertArrayEquals(rec[1], robotGot);
+        assertArrayEquals(rec[0], playerGot.get(20, TimeUnit.SECONDS));
+        assertTrue(pipeline.droppedBytes() > 0, "observation had to drop");
+        release.countDown();
+        assertTrue(gapReported.await(20, TimeUnit.SECONDS), "the gap is published as a diagnostic: " + diagnostics);
+    }
+
+    @Test
+    void aFailingLogStopsLoggingVisiblyWhileForwardingAndPublishingGoOn() throws Exception {
+        byte[][] rec = streams(trace("requests.reqclient.trace.jsonl"));
+        int expected = frames(rec[1], Direction.SERVER_TO_CLIENT).size() + frames(rec[0], Direction.CLIENT_TO_SERVER).size();
+        StreamBus bus = new StreamBus();
+        cleanup.add(bus);
+        CountDownLatch all = new CountDownLatch(expected);
+        bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(expected * 2), m -> {
+            if (m.payload() instanceof SpyMessage) {
+                all.countDown();
+            }
+        });
+        RecordingRecorder full = new RecordingRecorder() {
+            int writes;
+
+            @Override
+            public void wire(ConnectionInfo c, Direction dir, WireEvent e, long t) throws IOException {
+                if (++writes > 10) {
+                    throw new IOException("No space left on device");
+                }
+                super.wire(c, dir, e, t);
+            }
+        };
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, full, 64 << 20);
+        cleanup.add(pipeline);
+        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
+        ServerSocket player = fakePlayer(rec[1], playerGot);
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
+        cleanup.add(spy);
+        spy.start();
+        assertArrayEquals(rec[1], robotProgram(spy, rec[0]));
+        assertArrayEquals(rec[0], playerGot.get(20, TimeUnit.SECONDS));
+        assertTrue(all.await(20, TimeUnit.SECONDS), "every message is still published");
+        assertTrue(pipeline.recorderError().contains("No space left on device"), pipeline.recorderError());
+        assertTrue(full.closeCalled, "the log is closed when it fails, keeping what was written");
+    }
+
+    /** Keeps the wire events it is given, per direction. */
+    static class RecordingRecorder implements SpyRecorder {
+        final ByteArrayOutputStream c2s = new ByteArrayOutputStream();
+        final ByteArrayOutputStream s2c = new ByteArrayOutputStream();
+        final CountDownLatch closedSeen = new CountDownLatch(1);
+        volatile boolean closeCalled;
+
+        @Override
+        public void opened(ConnectionInfo connection, long timeNanos) {
+        }
+
+        @Override
+        public void closed(ConnectionInfo connection, long timeNanos, String reason) {
+            closedSeen.countDown();
+        }
+
+        @Override
+        public synchronized void wire(ConnectionInfo connection, Direction dir, WireEvent event, long timeNanos)
+                throws IOException {
+            (dir == Direction.CLIENT_TO_SERVER ? c2s : s2c).writeBytes(event.bytes());
+        }
+
+        @Override
+        public void diagnostic(ConnectionInfo connection, Direction dir, long streamOffset, String text, long timeNanos) {
+        }
+
+        @Override
+        public void flush() {
+        }
+
+        @Override
+        public void close() {
+            closeCalled = true;
+        }
+
+        synchronized byte[] bytes(Direction dir) {
+            return (dir == Direction.CLIENT_TO_SERVER ? c2s : s2c).toByteArray();
+        }
+    }
+
+}
