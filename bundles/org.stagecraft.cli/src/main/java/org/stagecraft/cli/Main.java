@@ -9,6 +9,8 @@ public final class Main {
             usage: stagecraft <command> [arguments]
               decode FILE   print every banner and Player message of a trace as one JSON object per line
               stats FILE    count messages per direction, interface, type and subtype
+              spy --listen [HOST:]PORT --to HOST:PORT [...] [--bind ADDR] [--log FILE]
+                            relay robot programs to Player, decode and log everything (Ctrl-C stops)
             """;
 
     private Main() {
@@ -27,6 +29,7 @@ public final class Main {
         return switch (args[0]) {
             case "decode" -> new DecodeCommand().run(rest, out, err);
             case "stats" -> new StatsCommand().run(rest, out, err);
+            case "spy" -> new SpyCommand().run(rest, out, err);
             default -> {
                 err.println("stagecraft: unknown command '" + args[0] + "'");
                 err.print(USAGE);
