@@ -1,5 +1,6 @@
 package org.stagecraft.cli;
 
+import org.stagecraft.recording.trace.SharedTraces;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -32,9 +33,7 @@ class MainTest {
 
     /** The shared recordings; the build passes their folder (see the parent pom). */
     private static Path trace(String name) {
-        String dir = System.getProperty("stagecraft.traces");
-        assertTrue(dir != null && Files.isDirectory(Path.of(dir)), "-Dstagecraft.traces must name shared/traces");
-        return Path.of(dir, name);
+        return SharedTraces.file(name);
     }
 
     private static Result run(String... args) {

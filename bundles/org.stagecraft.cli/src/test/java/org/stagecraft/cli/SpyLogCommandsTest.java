@@ -1,5 +1,6 @@
 package org.stagecraft.cli;
 
+import org.stagecraft.recording.trace.SharedTraces;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -36,9 +37,7 @@ class SpyLogCommandsTest {
     }
 
     private static Path trace(String name) {
-        String dir = System.getProperty("stagecraft.traces");
-        assertTrue(dir != null && Files.isDirectory(Path.of(dir)), "-Dstagecraft.traces must name shared/traces");
-        return Path.of(dir, name);
+        return SharedTraces.file(name);
     }
 
     /** The spy's way: every framed event of the trace, stamped with its receive time. */

@@ -1,5 +1,6 @@
 package org.stagecraft.spy.log;
 
+import org.stagecraft.recording.trace.SharedTraces;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -46,23 +47,11 @@ final class TraceLogs {
     }
 
     static Path tracesDir() {
-        String dir = System.getProperty("stagecraft.traces");
-        if (dir == null || !Files.isDirectory(Path.of(dir))) {
-            throw new IllegalStateException("-Dstagecraft.traces must name shared/traces (got " + dir + ")");
-        }
-        return Path.of(dir);
+        return SharedTraces.dir();
     }
 
     static List<Path> all() {
-        try (Stream<Path> s = Files.list(tracesDir())) {
-            List<Path> traces = s.filter(p -> p.getFileName().toString().endsWith(".trace.jsonl")).sorted().toList();
-            if (traces.isEmpty()) {
-                throw new IllegalStateException("no *.trace.jsonl in " + tracesDir());
-            }
-            return traces;
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
+        return SharedTraces.all();
     }
 
     static long nanos(double t) {

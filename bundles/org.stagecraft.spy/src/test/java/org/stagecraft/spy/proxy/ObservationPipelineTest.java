@@ -1,5 +1,6 @@
 package org.stagecraft.spy.proxy;
 
+import org.stagecraft.recording.trace.SharedTraces;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -52,9 +53,7 @@ class ObservationPipelineTest {
     }
 
     private static Path trace(String name) {
-        String dir = System.getProperty("stagecraft.traces");
-        assertNotNull(dir, "-Dstagecraft.traces must name shared/traces");
-        return Path.of(dir, name);
+        return SharedTraces.file(name);
     }
 
     /** The two byte streams of a one-connection recording. */
