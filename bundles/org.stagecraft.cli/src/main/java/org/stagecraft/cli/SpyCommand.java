@@ -43,6 +43,30 @@ final class SpyCommand {
             err.println(USAGE);
             return 2;
         }
+        // Ctrl-C runs the shutdown hooks: ours asks serve() to stop and waits until the log is closed.
+        CountDownLatch stop = new CountDownLatch(1);
+        CountDownLatch cleanedUp = new CountDownLatch(1);
+        Thread hook = new Thread(() -> {
+            stop.countDown();
+            try {
+                cleanedUp.await(30, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "stagecraft-spy-shutdown");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            return serve(o, err, stop, System.console() != null);
+        } finally {
+            cleanedUp.countDown();
+        }
+    }
+
+    /**
+     * Runs the spy until {@code stop} opens, printing the summary line every second (overwriting it
+     * on a terminal), then closes the spy, drains the pipeline and closes the log.
+     */
+    int serve(Options o, PrintStream err, CountDownLatch stop, boolean tty) {
         StreamBus bus = new StreamBus();
         LogRecorder recorder = null;
         if (o.log() != null) {
@@ -75,21 +99,9 @@ final class SpyCommand {
         if (o.log() != null) {
             err.println("logging to " + o.log());
         }
-        CountDownLatch stopped = new CountDownLatch(1);
-        CountDownLatch cleanedUp = new CountDownLatch(1);
-        Thread hook = new Thread(() -> {
-            stopped.countDown();
-            try {
-                cleanedUp.await(30, TimeUnit.SECONDS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "stagecraft-spy-shutdown");
-        Runtime.getRuntime().addShutdownHook(hook);
         Summary summary = new Summary(spy, pipeline);
-        boolean tty = System.console() != null;
         try {
-            while (!stopped.await(1, TimeUnit.SECONDS)) {
+            while (!stop.await(1, TimeUnit.SECONDS)) {
                 String line = summary.next();
                 if (tty) {
                     err.print("\r" + line + "   ");
@@ -102,7 +114,6 @@ final class SpyCommand {
         }
         stop(spy, pipeline, bus);
         err.println((tty ? "\n" : "") + "stopped: " + summary.totals());
-        cleanedUp.countDown();
         return 0;
     }
 

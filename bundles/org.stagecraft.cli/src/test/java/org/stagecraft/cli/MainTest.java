@@ -1,6 +1,5 @@
 package org.stagecraft.cli;
 
-import org.stagecraft.recording.trace.SharedTraces;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -22,6 +21,7 @@ import org.stagecraft.player.xdr.XdrReader;
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
+import org.stagecraft.recording.trace.SharedTraces;
 
 class MainTest {
 

@@ -1,6 +1,5 @@
 package org.stagecraft.cli;
 
-import org.stagecraft.recording.trace.SharedTraces;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -17,6 +16,7 @@ import java.util.Map;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.stagecraft.recording.trace.SharedTraces;
 import org.stagecraft.recording.trace.TraceFraming;
 import org.stagecraft.spy.log.SpyLogWriter;
 

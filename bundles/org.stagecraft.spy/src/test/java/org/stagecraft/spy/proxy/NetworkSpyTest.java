@@ -168,6 +168,35 @@ class NetworkSpyTest {
     }
 
     @Test
+    void aClientResetResetsTheUpstream() throws Exception {
+        ServerSocket up = upstream();
+        CountDownLatch firstByte = new CountDownLatch(1);
+        CompletableFuture<Throwable> upstreamSaw = async(() -> {
+            try (Socket s = up.accept()) {
+                InputStream in = s.getInputStream();
+                in.read();
+                firstByte.countDown();
+                while (in.read() >= 0) {
+                    // an orderly end here would be wrong: the client reset
+                }
+                return null;
+            } catch (IOException e) {
+                return e;
+            }
+        });
+        RecordingObserver observer = new RecordingObserver();
+        Socket client = connect(spy(up, observer));
+        client.getOutputStream().write(1);
+        assertTrue(firstByte.await(10, TimeUnit.SECONDS));
+        client.setSoLinger(true, 0);
+        client.close(); // RST
+        Throwable seen = upstreamSaw.get(20, TimeUnit.SECONDS);
+        assertTrue(seen instanceof SocketException, "Player must see a reset, saw " + seen);
+        assertTrue(observer.closed.await(10, TimeUnit.SECONDS));
+        assertTrue(observer.reason.startsWith("client side failed"), observer.reason);
+    }
+
+    @Test
     void aRefusingUpstreamResetsTheClient() throws Exception {
         ServerSocket up = upstream();
         int deadPort = up.getLocalPort();

@@ -1,9 +1,7 @@
 package org.stagecraft.spy.proxy;
 
-import org.stagecraft.recording.trace.SharedTraces;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
@@ -29,6 +27,7 @@ import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.codec.PlayerEncoder;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.recording.trace.SharedTraces;
 import org.stagecraft.recording.trace.TraceReader;
 import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.streams.DeliveryPolicy;

@@ -1,0 +1,135 @@
+package org.stagecraft.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.recording.peer.RecordedConnection;
+import org.stagecraft.recording.peer.ReplayPeer;
+import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.spy.log.SpyLogReader;
+
+/** {@code stagecraft spy}: options, the relay with its log, the summary lines, a clean stop. */
+@Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class SpyCommandTest {
+    @TempDir
+    Path tmp;
+
+    /** A stream that lets the test wait for a line the command prints. */
+    private static final class Lines extends ByteArrayOutputStream {
+        synchronized String text() {
+            return toString(StandardCharsets.UTF_8);
+        }
+
+        String await(Pattern p, long timeoutMs) throws InterruptedException {
+            long deadline = System.currentTimeMillis() + timeoutMs;
+            while (System.currentTimeMillis() < deadline) {
+                Matcher m = p.matcher(text());
+                if (m.find()) {
+                    return m.group(1);
+                }
+                synchronized (this) {
+                    wait(50); // woken by write(); the timeout only bounds a missed notify
+                }
+            }
+            throw new AssertionError("no line matching " + p + " in:\n" + text());
+        }
+
+        @Override
+        public synchronized void write(byte[] b, int off, int len) {
+            super.write(b, off, len);
+            notifyAll();
+        }
+    }
+
+    @Test
+    void relaysARecordedSessionLogsItAndStopsCleanly() throws Exception {
+        RecordedConnection rc = RecordedConnection.read(SharedTraces.file("pioneer-laser-sonar.gt.trace.jsonl")).get(0);
+        Path log = tmp.resolve("session.mcap");
+        Lines err = new Lines();
+        CountDownLatch stop = new CountDownLatch(1);
+        try (ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();
+                ServerSocket player = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
+            Future<ReplayPeer.Result> served = threads.submit(() -> ReplayPeer.serve(player.accept(), rc));
+            SpyCommand.Options o = SpyCommand.parse(new String[] {"--listen", "0", "--to", "127.0.0.1:" + player.getLocalPort(),
+                    "--log", log.toString()});
+            Future<Integer> spy = threads.submit(() -> new SpyCommand().serve(o, new PrintStream(err, true, StandardCharsets.UTF_8),
+                    stop, false));
+            int port = Integer.parseInt(err.await(Pattern.compile("spying 127\\.0\\.0\\.1:(\\d+) -> "), 20_000));
+
+            ReplayPeer.Result program = ReplayPeer.client(new Socket(InetAddress.getLoopbackAddress(), port), rc);
+            assertTrue(program.matches(), "the program's bytes differ at " + program.firstDifference());
+            assertTrue(served.get(20, TimeUnit.SECONDS).matches());
+            err.await(Pattern.compile("connections 0 open/(1) \\| .* msg/s \\| .* kB/s \\| decode errors 0 \\| dropped 0 B"), 20_000);
+
+            stop.countDown();
+            assertEquals(0, spy.get(20, TimeUnit.SECONDS));
+            assertTrue(err.text().contains("stopped: 1 connections"), err.text());
+        }
+        try (SpyLogReader r = SpyLogReader.open(log)) {
+            assertEquals(false, r.recovered(), "the log was closed properly");
+            assertArrayEquals(rc.clientBytes(), r.streamBytes(1, Direction.CLIENT_TO_SERVER));
+            assertArrayEquals(rc.serverBytes(), r.streamBytes(1, Direction.SERVER_TO_CLIENT));
+        }
+    }
+
+    @Test
+    void routesPairListenWithToAndBindLoopbackByDefault() {
+        SpyCommand.Options o = SpyCommand.parse(new String[] {"--listen", "6665", "--to", "localhost:7665", "--listen", "6666",
+                "--to", "7666", "--log", "x.mcap"});
+        assertEquals(2, o.routes().size());
+        assertTrue(o.routes().get(0).listen().getAddress().isLoopbackAddress());
+        assertEquals(6666, o.routes().get(1).listen().getPort());
+        assertEquals("localhost", o.routes().get(0).upstream().getHostString());
+        assertEquals(7666, o.routes().get(1).upstream().getPort());
+        assertEquals(Path.of("x.mcap"), o.log());
+        List<String> bound = List.of("--listen", "6665", "--to", "7665", "--bind", "0.0.0.0");
+        assertTrue(SpyCommand.parse(bound.toArray(String[]::new)).routes().get(0).listen().getAddress().isAnyLocalAddress());
+    }
+
+    @Test
+    void badOptionsAreNamed() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> SpyCommand.parse(new String[] {"--listen", "6665"}));
+        assertTrue(e.getMessage().contains("1 --listen, 0 --to"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> SpyCommand.parse(new String[] {"--listen", "66x5", "--to", "1"}));
+        assertTrue(e.getMessage().contains("66x5"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class,
+                () -> SpyCommand.parse(new String[] {"--listen", "6665", "--to", "no-such-host.invalid:7665"}));
+        assertTrue(e.getMessage().contains("no-such-host.invalid"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> SpyCommand.parse(new String[] {"--port", "1"}));
+        assertTrue(e.getMessage().contains("--port"), e.getMessage());
+    }
+
+    @Test
+    void aPortInUseIsReportedAndNothingKeepsRunning() throws Exception {
+        try (ServerSocket taken = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
+            SpyCommand.Options o = SpyCommand.parse(new String[] {"--listen", String.valueOf(taken.getLocalPort()), "--to", "7665"});
+            Lines err = new Lines();
+            int code = new SpyCommand().serve(o, new PrintStream(err, true, StandardCharsets.UTF_8), new CountDownLatch(1), false);
+            assertEquals(1, code);
+            assertTrue(err.text().contains("cannot listen on 127.0.0.1:" + taken.getLocalPort()), err.text());
+        }
+    }
+}
