@@ -1,0 +1,62 @@
+package org.stagecraft.spy.bench;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.util.Arrays;
+import java.util.function.BooleanSupplier;
+
+/**
+ * Round trips of one real Player request and reply through a relay, one at a time, timed with
+ * {@link System#nanoTime()}: what a PULL-mode robot program waits for on every cycle.
+ */
+final class PingProbe {
+    private static final int WARMUP = 200;
+
+    /** Round-trip times in microseconds, sorted. */
+    record Rtts(double[] sortedMicros) {
+        double quantile(double q) {
+            if (sortedMicros.length == 0) {
+                return Double.NaN;
+            }
+            int i = (int) Math.min(sortedMicros.length - 1, Math.round(q * (sortedMicros.length - 1)));
+            return sortedMicros[i];
+        }
+
+        int count() {
+            return sortedMicros.length;
+        }
+    }
+
+    /** Pings at most {@code max} times after a warm-up, and stops early once {@code more} says so. */
+    static Rtts run(InetSocketAddress at, Workload w, int max, BooleanSupplier more) throws IOException {
+        try (Socket s = new Socket()) {
+            s.setTcpNoDelay(true);
+            s.connect(at);
+            InputStream in = s.getInputStream();
+            OutputStream out = s.getOutputStream();
+            if (in.readNBytes(w.banner().length).length != w.banner().length) {
+                throw new IOException("no banner from " + at);
+            }
+            byte[] reply = new byte[w.pingReply().length];
+            double[] rtts = new double[max];
+            int n = 0;
+            for (int i = 0; i < WARMUP + max && (i < WARMUP || more.getAsBoolean()); i++) {
+                long t0 = System.nanoTime();
+                out.write(w.pingRequest());
+                if (in.readNBytes(reply, 0, reply.length) != reply.length) {
+                    throw new IOException("the reply was cut short");
+                }
+                long t1 = System.nanoTime();
+                if (i >= WARMUP) {
+                    rtts[n++] = (t1 - t0) / 1e3;
+                }
+            }
+            double[] sorted = Arrays.copyOf(rtts, n);
+            Arrays.sort(sorted);
+            return new Rtts(sorted);
+        }
+    }
+}
