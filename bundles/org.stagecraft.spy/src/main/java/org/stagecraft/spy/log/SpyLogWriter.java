@@ -38,7 +38,12 @@ import com.github.luben.zstd.Zstd;
 public final class SpyLogWriter implements AutoCloseable {
     /** Uncompressed bytes after which a chunk is written. */
     public static final int DEFAULT_CHUNK_SIZE = 1 << 20;
-    private static final int ZSTD_LEVEL = 3;
+    /**
+     * Level 1, not zstd's default 3: on recorded Player traffic it compresses twice as fast
+     * (~400 vs ~200 MB/s on one core here) to the same ratio (3.06 vs 3.09), and the log writer is
+     * the slowest stage of the spy's observation.
+     */
+    private static final int ZSTD_LEVEL = 1;
 
     private final WritableByteChannel out;
     private final int chunkSize;
