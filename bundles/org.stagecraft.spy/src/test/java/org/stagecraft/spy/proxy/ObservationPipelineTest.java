@@ -33,7 +33,9 @@ import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamMessage;
+import org.stagecraft.streams.StreamConsumer;
 import org.stagecraft.streams.StreamPattern;
+import org.stagecraft.streams.Subscription;
 
 /** Recorded Player traffic replayed through a live spy: decoded, published, recorded; and what happens under load. */
 @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
@@ -168,6 +170,44 @@ class ObservationPipelineTest {
         assertTrue(recorder.closedSeen.await(10, TimeUnit.SECONDS));
         assertArrayEquals(rec[1], recorder.bytes(Direction.SERVER_TO_CLIENT), "the log can rebuild the stream");
         assertArrayEquals(rec[0], recorder.bytes(Direction.CLIENT_TO_SERVER));
+    }
+
+    @Test
+    void aBusConsumerBlockedForeverDelaysNeitherTheWireNorTheLogAndItsLossIsCounted() throws Exception {
+        byte[][] rec = streams(trace("pioneer-laser-sonar.gt.trace.jsonl"));
+        int expected = frames(rec[0], Direction.CLIENT_TO_SERVER).size() + frames(rec[1], Direction.SERVER_TO_CLIENT).size();
+        StreamBus bus = new StreamBus();
+        cleanup.add(bus);
+        CountDownLatch never = new CountDownLatch(1);
+        CountDownLatch stuck = new CountDownLatch(2);
+        StreamConsumer blockForever = m -> {
+            stuck.countDown();
+            try {
+                never.await(); // a tool that hangs (released only when the bus closes and interrupts it)
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        };
+        Subscription lossless = bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(100), blockForever);
+        Subscription latest = bus.subscribe(StreamPattern.any(), DeliveryPolicy.latestValue(), blockForever);
+        RecordingRecorder recorder = new RecordingRecorder();
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, recorder, 64 << 20);
+        cleanup.add(pipeline);
+        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
+        ServerSocket player = fakePlayer(rec[1], playerGot);
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
+        cleanup.add(spy);
+        spy.start();
+
+        assertArrayEquals(rec[1], robotProgram(spy, rec[0]));
+        assertArrayEquals(rec[0], playerGot.get(20, TimeUnit.SECONDS));
+        assertTrue(recorder.closedSeen.await(20, TimeUnit.SECONDS), "the log got everything although tools hang");
+        assertArrayEquals(rec[1], recorder.bytes(Direction.SERVER_TO_CLIENT));
+        assertTrue(stuck.await(20, TimeUnit.SECONDS), "both consumers are stuck in their first message");
+        assertEquals(expected, pipeline.messages(), "every message was published");
+        assertEquals(0, pipeline.droppedBytes(), "a hung consumer costs the spy nothing");
+        assertTrue(lossless.dropped() >= expected - 1 - 100, "lossless overflow counted: " + lossless.dropped());
+        assertTrue(latest.dropped() > 0, "superseded values counted: " + latest.dropped());
     }
 
     @Test
