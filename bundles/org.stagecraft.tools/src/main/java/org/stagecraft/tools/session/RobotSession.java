@@ -1,0 +1,250 @@
+package org.stagecraft.tools.session;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.spy.log.SpyLogWriter;
+import org.stagecraft.spy.proxy.LogRecorder;
+import org.stagecraft.spy.proxy.NetworkSpy;
+import org.stagecraft.spy.proxy.ObservationPipeline;
+import org.stagecraft.spy.proxy.Route;
+import org.stagecraft.streams.StreamBus;
+import org.stagecraft.tools.cfg.CfgException;
+import org.stagecraft.tools.cfg.CfgRewriter;
+import org.stagecraft.tools.cfg.PlayerCfg;
+import org.stagecraft.tools.process.Readiness;
+import org.stagecraft.tools.process.SupervisedTool;
+import org.stagecraft.tools.process.ToolException;
+import org.stagecraft.tools.process.ToolListener;
+import org.stagecraft.tools.process.ToolSpec;
+
+/**
+ * One development session against Player, started in the order the parts depend on each other:
+ * <ol>
+ * <li>read the cfg and find every port Player will listen on; check they are free now (the spy
+ * will need them);</li>
+ * <li>pick a free port for each, write the rewritten copy of the cfg into a scratch directory;</li>
+ * <li>start the user's tools, each until ready;</li>
+ * <li>start Player on the copy ({@code -p MOVED copy}) until all moved ports accept connections;</li>
+ * <li>start the Network Spy on the original ports, forwarding to the moved ones, logging.</li>
+ * </ol>
+ * Robot programs then connect to the original ports, unchanged. If any step fails, what was
+ * started is stopped again before the error is thrown: there is no half-started session.
+ * {@link #close()} stops everything in reverse order, closes the log and removes the scratch files.
+ */
+public final class RobotSession implements AutoCloseable {
+    public static final String PLAYER_TOOL_NAME = "Player";
+    private static final long OBSERVER_QUEUE_BYTES = 64L << 20;
+
+    private final SessionConfig config;
+    private final ToolListener listener;
+    private PlayerCfg cfg;
+    private final Map<Integer, Integer> portMap = new LinkedHashMap<>();
+    private ScratchDirectory scratch;
+    private CfgRewriter.Rewritten rewritten;
+    private final List<SupervisedTool> tools = new ArrayList<>();
+    private SupervisedTool player;
+    private StreamBus bus;
+    private ObservationPipeline pipeline;
+    private NetworkSpy spy;
+    private boolean closed;
+
+    private RobotSession(SessionConfig config, ToolListener listener) {
+        this.config = config;
+        this.listener = listener == null ? ToolListener.NONE : listener;
+    }
+
+    /**
+     * Starts a session.
+     *
+     * @throws SessionException naming what failed and where; nothing of the session is left running
+     */
+    public static RobotSession start(SessionConfig config, ToolListener listener) throws SessionException {
+        RobotSession s = new RobotSession(config, listener);
+        try {
+            s.startParts();
+            return s;
+        } catch (SessionException e) {
+            s.close();
+            throw e;
+        } catch (RuntimeException | Error e) {
+            s.close();
+            throw e;
+        }
+    }
+
+    private void startParts() throws SessionException {
+        try {
+            cfg = PlayerCfg.read(config.cfg());
+        } catch (CfgException e) {
+            throw new SessionException("bad Player configuration: " + e.getMessage(), e);
+        }
+        Map<Integer, PlayerCfg.AddressUse> ports = cfg.listenPorts(config.defaultPort());
+        if (ports.isEmpty()) {
+            throw new SessionException(cfg.file() + ": no driver provides a device, so Player would serve nothing", null);
+        }
+        for (Map.Entry<Integer, PlayerCfg.AddressUse> p : ports.entrySet()) {
+            if (!Ports.isFree(config.bindHost(), p.getKey())) {
+                PlayerCfg.AddressUse a = p.getValue();
+                String from = a.address().port() < 0 ? "the default port (-p " + config.defaultPort() + ") of \""
+                        + a.token().text() + "\" at " + a.where() : "\"" + a.token().text() + "\" at " + a.where();
+                throw new SessionException("port " + p.getKey() + " is already in use on " + config.bindHost() + " (needed for "
+                        + from + "); is another Player or session running?", null);
+            }
+        }
+        try {
+            boolean defaultListed = ports.containsKey(config.defaultPort());
+            List<Integer> free = Ports.free("127.0.0.1", ports.size() + (defaultListed ? 0 : 1));
+            int i = 0;
+            for (int original : ports.keySet()) {
+                portMap.put(original, free.get(i++));
+            }
+            int movedDefault = defaultListed ? portMap.get(config.defaultPort()) : free.get(i);
+            scratch = ScratchDirectory.create(config.scratchRoot() != null ? config.scratchRoot() : ScratchDirectory.defaultRoot());
+            rewritten = CfgRewriter.write(cfg, portMap, scratch.path());
+
+            for (ToolSpec t : config.tools()) {
+                SupervisedTool tool = new SupervisedTool(t, listener);
+                tools.add(tool);
+                tool.start();
+            }
+
+            List<String> command = new ArrayList<>(config.playerCommand());
+            command.addAll(List.of("-p", String.valueOf(movedDefault), rewritten.main().toString()));
+            ToolSpec playerSpec = new ToolSpec(PLAYER_TOOL_NAME, command, cfg.file().getParent(), config.playerEnvironment(),
+                    Readiness.ports("127.0.0.1", List.copyOf(portMap.values())), config.playerRestart(),
+                    config.playerReadyWithin());
+            player = new SupervisedTool(playerSpec, listener);
+            player.start();
+
+            startSpy();
+        } catch (CfgException e) {
+            throw new SessionException("bad Player configuration: " + e.getMessage(), e);
+        } catch (ToolException e) {
+            throw new SessionException(e.getMessage(), e);
+        } catch (IOException e) {
+            throw new SessionException(e.getMessage(), e);
+        }
+    }
+
+    private void startSpy() throws IOException {
+        List<Route> routes = new ArrayList<>();
+        for (Map.Entry<Integer, Integer> m : portMap.entrySet()) {
+            routes.add(Route.of(config.bindHost(), m.getKey(), "127.0.0.1", m.getValue()));
+        }
+        bus = new StreamBus();
+        LogRecorder recorder = null;
+        if (config.log() != null) {
+            Path parent = config.log().toAbsolutePath().getParent();
+            if (parent != null) {
+                Files.createDirectories(parent);
+            }
+            Map<String, String> meta = new LinkedHashMap<>();
+            meta.put("tool", "stagecraft robot session");
+            meta.put("cfg", cfg.file().toString());
+            meta.put("routes", routes.toString());
+            try {
+                recorder = new LogRecorder(SpyLogWriter.create(config.log(), meta));
+            } catch (IOException e) {
+                throw new IOException("cannot write the spy log " + config.log() + ": " + e.getMessage(), e);
+            }
+        }
+        pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder, OBSERVER_QUEUE_BYTES);
+        spy = new NetworkSpy(routes, pipeline);
+        spy.start();
+    }
+
+    public SessionConfig config() {
+        return config;
+    }
+
+    public PlayerCfg cfg() {
+        return cfg;
+    }
+
+    /** Original port (where robot programs connect) to the port Player really listens on. */
+    public Map<Integer, Integer> portMap() {
+        return Collections.unmodifiableMap(portMap);
+    }
+
+    /** The copy Player runs on. */
+    public CfgRewriter.Rewritten rewritten() {
+        return rewritten;
+    }
+
+    public Path scratchDirectory() {
+        return scratch == null ? null : scratch.path();
+    }
+
+    /** The user's tools in start order. */
+    public List<SupervisedTool> tools() {
+        return List.copyOf(tools);
+    }
+
+    public SupervisedTool player() {
+        return player;
+    }
+
+    public NetworkSpy spy() {
+        return spy;
+    }
+
+    public ObservationPipeline pipeline() {
+        return pipeline;
+    }
+
+    public StreamBus bus() {
+        return bus;
+    }
+
+    public synchronized boolean isClosed() {
+        return closed;
+    }
+
+    /**
+     * Stops the spy (closing the log after everything observed is written), Player and the tools
+     * (whole process trees, in reverse start order), then removes the scratch files. Safe to call
+     * more than once and from any thread.
+     */
+    @Override
+    public synchronized void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        if (spy != null) {
+            spy.close();
+        }
+        if (pipeline != null) {
+            try {
+                pipeline.close();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        if (bus != null) {
+            bus.close();
+        }
+        if (player != null) {
+            player.stop();
+        }
+        for (int i = tools.size() - 1; i >= 0; i--) {
+            tools.get(i).stop();
+        }
+        if (scratch != null) {
+            try {
+                scratch.close();
+            } catch (IOException e) {
+                listener.output(null, ToolListener.Stream.SUPERVISOR, "could not remove " + scratch.path() + ": " + e);
+            }
+        }
+    }
+}
