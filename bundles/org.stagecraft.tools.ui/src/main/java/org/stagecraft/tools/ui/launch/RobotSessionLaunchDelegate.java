@@ -1,0 +1,124 @@
+package org.stagecraft.tools.ui.launch;
+
+import org.eclipse.core.resources.IResource;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.core.runtime.IProgressMonitor;
+import org.eclipse.core.runtime.Status;
+import org.eclipse.core.runtime.SubMonitor;
+import org.eclipse.core.runtime.jobs.Job;
+import org.eclipse.debug.core.DebugPlugin;
+import org.eclipse.debug.core.ILaunch;
+import org.eclipse.debug.core.ILaunchConfiguration;
+import org.eclipse.debug.core.ILaunchesListener2;
+import org.eclipse.debug.core.model.LaunchConfigurationDelegate;
+import org.stagecraft.tools.session.RobotSession;
+import org.stagecraft.tools.session.SessionException;
+import org.stagecraft.tools.ui.view.ToolsModel;
+
+/**
+ * Starts a Robot Session as one launch: the user's tools, Player on the rewritten cfg, the spy on
+ * the original ports (log in the project), then the robot program. Each part is a process of the
+ * launch (its own console, its line in the Debug view); terminating the launch, or any part of the
+ * session, stops all of it. If the session cannot start, nothing of it is left running and the
+ * launch fails with the reason (file:line, port, program).
+ */
+public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegate {
+
+    /** The running sessions' parts, by launch (for tests and the Tools view). */
+    private static final java.util.Map<ILaunch, SessionParts> RUNNING = new java.util.concurrent.ConcurrentHashMap<>();
+
+    public static SessionParts partsOf(ILaunch launch) {
+        return RUNNING.get(launch);
+    }
+
+    @Override
+    public void launch(ILaunchConfiguration configuration, String mode, ILaunch launch, IProgressMonitor monitor)
+            throws CoreException {
+        SubMonitor m = SubMonitor.convert(monitor, "Robot Session " + configuration.getName(), 3);
+        SessionParts parts = new SessionParts(launch, configuration.getName());
+        SessionSettings settings;
+        try {
+            settings = SessionSettings.read(configuration);
+        } catch (CoreException e) {
+            parts.failed(e.getMessage(), null);
+            throw e;
+        }
+        ToolsModel.get().removeSession(configuration.getName());
+        m.subTask("starting tools, Player and the spy");
+        RobotSession session;
+        try {
+            session = RobotSession.start(settings.config(), parts);
+        } catch (SessionException e) {
+            parts.failed(e.getMessage(), e);
+            throw new CoreException(Status.error("Robot Session '" + configuration.getName() + "' did not start: "
+                    + e.getMessage(), e));
+        }
+        m.worked(2);
+        parts.started(session);
+        RUNNING.put(launch, parts);
+        stopWhenLaunchEnds(launch, parts, settings);
+        if (settings.program() != null) {
+            m.subTask("starting " + settings.program().getName());
+            try {
+                RobotProgram.start(configuration, mode, launch, settings, parts, m.split(1));
+            } catch (CoreException e) {
+                parts.stopNow();
+                throw e;
+            }
+        }
+    }
+
+    /** Terminate or removal of the launch stops the session; afterwards the new log appears in the project. */
+    private static void stopWhenLaunchEnds(ILaunch launch, SessionParts parts, SessionSettings settings) {
+        ILaunchesListener2 listener = new ILaunchesListener2() {
+            @Override
+            public void launchesTerminated(ILaunch[] launches) {
+                for (ILaunch l : launches) {
+                    if (l == launch) {
+                        ended();
+                    }
+                }
+            }
+
+            @Override
+            public void launchesRemoved(ILaunch[] launches) {
+                for (ILaunch l : launches) {
+                    if (l == launch) {
+                        ended();
+                    }
+                }
+            }
+
+            @Override
+            public void launchesAdded(ILaunch[] launches) {
+            }
+
+            @Override
+            public void launchesChanged(ILaunch[] launches) {
+            }
+
+            private void ended() {
+                DebugPlugin.getDefault().getLaunchManager().removeLaunchListener(this);
+                RUNNING.remove(launch);
+                parts.stopInBackground();
+                if (settings.logFolder() != null) {
+                    Job refresh = Job.create("Refresh spy logs", mon -> {
+                        try {
+                            settings.logFolder().refreshLocal(IResource.DEPTH_ONE, mon);
+                        } catch (CoreException e) {
+                            return e.getStatus();
+                        }
+                        return Status.OK_STATUS;
+                    });
+                    refresh.setSystem(true);
+                    refresh.schedule();
+                }
+            }
+        };
+        DebugPlugin.getDefault().getLaunchManager().addLaunchListener(listener);
+        // a launch can end before the listener is in place (e.g. Player crashed at once)
+        if (launch.isTerminated()) {
+            listener.launchesTerminated(new ILaunch[] {launch});
+        }
+    }
+}

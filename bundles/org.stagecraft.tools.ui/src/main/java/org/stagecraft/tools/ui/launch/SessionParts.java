@@ -1,0 +1,205 @@
+package org.stagecraft.tools.ui.launch;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.core.runtime.ILog;
+import org.eclipse.core.runtime.Platform;
+import org.eclipse.core.runtime.Status;
+import org.eclipse.debug.core.DebugException;
+import org.eclipse.debug.core.ILaunch;
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.tools.process.SupervisedTool;
+import org.stagecraft.tools.process.ToolListener;
+import org.stagecraft.tools.process.ToolState;
+import org.stagecraft.tools.session.RobotSession;
+import org.stagecraft.tools.ui.console.SessionPartProcess;
+import org.stagecraft.tools.ui.view.ToolsModel;
+
+/**
+ * The Eclipse face of one running Robot Session: a process (and so a console) in the launch for
+ * every part as soon as it starts, the Tools view's rows, the Error Log for crashes, restarts and
+ * failures, and the session's stop when any of its parts is terminated.
+ */
+public final class SessionParts implements ToolListener {
+    public static final String SPY_PART = "Network Spy";
+    private static final String BUNDLE = "org.stagecraft.tools.ui";
+
+    private final ILaunch launch;
+    private final String sessionName;
+    private final Map<String, SessionPartProcess> parts = new LinkedHashMap<>();
+    private final List<ILaunch> linkedLaunches = new ArrayList<>();
+    private volatile RobotSession session;
+    private SessionPartProcess spy;
+    private boolean stopping;
+
+    public SessionParts(ILaunch launch, String sessionName) {
+        this.launch = launch;
+        this.sessionName = sessionName;
+    }
+
+    public String sessionName() {
+        return sessionName;
+    }
+
+    public RobotSession session() {
+        return session;
+    }
+
+    /** The process of a part ("Player", a tool's name, {@value #SPY_PART}), or null. */
+    public synchronized SessionPartProcess part(String name) {
+        return parts.get(name);
+    }
+
+    /** Called once the session runs: shows the spy as a part of its own. */
+    public void started(RobotSession s) {
+        this.session = s;
+        SessionPartProcess p;
+        synchronized (this) {
+            p = new SessionPartProcess(SPY_PART, "stagecraft.spy", launch, control(null));
+            parts.put(SPY_PART, p);
+            spy = p;
+        }
+        p.register();
+        s.portMap().forEach((orig, moved) -> p.stdout("robot programs connect to " + s.config().bindHost() + ":" + orig
+                + "  ->  Player on 127.0.0.1:" + moved));
+        p.stdout(s.config().log() != null ? "logging to " + s.config().log() : "not logging (no log folder set)");
+        ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.READY, ProcessHandle.current().pid(), 0,
+                null, "spying on " + s.portMap().keySet()));
+    }
+
+    /** The robot program ran in a launch of its own (PyDev): it ends with the session. */
+    public synchronized void link(ILaunch other) {
+        linkedLaunches.add(other);
+    }
+
+    @Override
+    public void output(SupervisedTool tool, Stream stream, String line) {
+        if (tool == null) {
+            log(Status.warning(sessionName + ": " + line));
+            return;
+        }
+        SessionPartProcess p = partFor(tool);
+        switch (stream) {
+            case STDERR -> p.stderr(line);
+            case SUPERVISOR -> p.stdout("[stagecraft] " + line);
+            default -> p.stdout(line);
+        }
+    }
+
+    @Override
+    public void stateChanged(SupervisedTool tool, ToolState from, ToolState to, String detail) {
+        SessionPartProcess p = partFor(tool);
+        ProcessHandle h = tool.process();
+        ToolsModel.get().update(new ToolsModel.Row(sessionName, tool.name(), to, h != null ? h.pid() : -1,
+                tool.restarts(), tool.lastExitCode(), detail));
+        switch (to) {
+            case RESTARTING -> log(Status.warning(sessionName + ": " + tool.name() + " " + detail));
+            case FAILED -> log(Status.error(sessionName + ": " + tool.name() + " failed: " + detail));
+            default -> {
+            }
+        }
+        if (to.isFinal()) {
+            Integer code = tool.lastExitCode();
+            p.ended(code != null ? code : 0);
+        }
+    }
+
+    private synchronized SessionPartProcess partFor(SupervisedTool tool) {
+        SessionPartProcess p = parts.get(tool.name());
+        if (p == null) {
+            p = new SessionPartProcess(tool.name(), "stagecraft.tool", launch, control(tool));
+            parts.put(tool.name(), p);
+            p.register();
+        }
+        return p;
+    }
+
+    private SessionPartProcess.Control control(SupervisedTool tool) {
+        return new SessionPartProcess.Control() {
+            @Override
+            public void terminate() {
+                stopInBackground();
+            }
+
+            @Override
+            public void write(String input) throws IOException {
+                if (tool == null) {
+                    throw new IOException(SPY_PART + " reads no input");
+                }
+                tool.write(input);
+            }
+        };
+    }
+
+    /**
+     * Stops the whole session (every part depends on the others) without blocking the caller, which
+     * is often the UI thread: stopping waits for process trees to end and the log to be written.
+     */
+    public void stopInBackground() {
+        synchronized (this) {
+            if (stopping) {
+                return;
+            }
+            stopping = true;
+        }
+        Thread.ofVirtual().name("stagecraft-session-stop").start(this::stopNow);
+    }
+
+    /** Stops everything and marks every part ended. */
+    public void stopNow() {
+        List<ILaunch> others;
+        synchronized (this) {
+            stopping = true;
+            others = List.copyOf(linkedLaunches);
+        }
+        for (ILaunch l : others) {
+            try {
+                if (l.canTerminate()) {
+                    l.terminate();
+                }
+            } catch (DebugException e) {
+                log(Status.warning(sessionName + ": could not stop " + l.getLaunchConfiguration().getName(), e));
+            }
+        }
+        RobotSession s = session;
+        if (s != null) {
+            s.close();
+            if (spy != null) {
+                spy.stdout("stopped: " + s.spy().totalConnections() + " connections, " + s.pipeline().messages()
+                        + " messages, " + (s.spy().bytesForwarded(Direction.CLIENT_TO_SERVER)
+                                + s.spy().bytesForwarded(Direction.SERVER_TO_CLIENT)) + " bytes relayed"
+                        + (s.pipeline().recorderError() != null ? "; log error: " + s.pipeline().recorderError() : ""));
+                ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.STOPPED, -1, 0, null,
+                        s.spy().totalConnections() + " connections relayed"));
+            }
+        }
+        List<SessionPartProcess> all;
+        synchronized (this) {
+            all = List.copyOf(parts.values());
+        }
+        for (SessionPartProcess p : all) {
+            p.ended(0);
+        }
+    }
+
+    /** The session could not start: every part shown so far ends, and the reason goes to the Error Log. */
+    public void failed(String message, Throwable cause) {
+        log(Status.error(sessionName + ": " + message, cause));
+        List<SessionPartProcess> all;
+        synchronized (this) {
+            all = List.copyOf(parts.values());
+        }
+        for (SessionPartProcess p : all) {
+            p.stderr("[stagecraft] session not started: " + message);
+            p.ended(1);
+        }
+    }
+
+    static void log(org.eclipse.core.runtime.IStatus status) {
+        ILog.of(Platform.getBundle(BUNDLE)).log(status);
+    }
+}
