@@ -118,6 +118,84 @@ class RobotSessionTest {
         }
     }
 
+    private CompletableFuture<ReplayPeer.Result> replayClient(int port, RecordedConnection recorded) {
+        return CompletableFuture.supplyAsync(() -> {
+            try {
+                return ReplayPeer.client(new Socket(InetAddress.getLoopbackAddress(), port), recorded);
+            } catch (IOException e) {
+                throw new RuntimeException(e);
+            }
+        }, peers);
+    }
+
+    @Test
+    void robotsOnSeveralPortsWithAnIncludeAndRelativePaths() throws Exception {
+        List<Integer> ports = Ports.free("127.0.0.1", 2);
+        int p1 = ports.get(0);
+        int p2 = ports.get(1);
+        Path proj = Files.createDirectories(tmp.resolve("proj"));
+        Files.createDirectories(proj.resolve("worlds"));
+        Files.writeString(proj.resolve("worlds/two.world"), "# a world\n");
+        Files.writeString(proj.resolve("robots.inc"), "driver ( name \"stage\" provides [ \"%d:position2d:0\" ] model \"r1\" )\n"
+                .formatted(p2));
+        Path cfg = Files.writeString(proj.resolve("two.cfg"), """
+                # two robots, two ports
+                driver ( name "stage" provides [ "%1$d:simulation:0" ] plugin "stageplugin" worldfile "worlds/two.world" )
+                driver ( name "stage" provides [ "%1$d:position2d:0" ] model "r0" )
+                include "robots.inc"
+                driver
+                (
+                  name "rangertolaser"
+                  provides [ "localhost:%2$d:laser:0" ]
+                  requires [ "%2$d:ranger:1" ]
+                )
+                """.formatted(p1, p2));
+        RecordedConnection recorded = RecordedConnection.read(Worlds.traces().resolve(TRACE)).get(0);
+        try (RobotSession session = RobotSession.start(config(cfg, 6665), rec)) {
+            assertEquals(List.of(p1, p2), List.copyOf(session.portMap().keySet()));
+            int m1 = session.portMap().get(p1);
+            int m2 = session.portMap().get(p2);
+            rec.awaitLine(l -> l.text().equals("standin: listening on " + m1 + " " + m2), WAIT);
+            rec.awaitLine(l -> l.text().endsWith("paths=ok"), WAIT);
+            assertEquals(2, session.rewritten().files().size(), "the include was copied too");
+            CompletableFuture<ReplayPeer.Result> a = replayClient(p1, recorded);
+            CompletableFuture<ReplayPeer.Result> b = replayClient(p2, recorded);
+            assertTrue(a.get(60, TimeUnit.SECONDS).matches(), "robot 0 through the spy");
+            assertTrue(b.get(60, TimeUnit.SECONDS).matches(), "robot 1 through the spy");
+            rec.awaitLine(l -> l.text().startsWith("standin: served port=" + m1 + " ") && l.text().endsWith("match=true"), WAIT);
+            rec.awaitLine(l -> l.text().startsWith("standin: served port=" + m2 + " ") && l.text().endsWith("match=true"), WAIT);
+        }
+        assertTrue(Ports.isFree("127.0.0.1", p1) && Ports.isFree("127.0.0.1", p2));
+        try (SpyLogReader log = SpyLogReader.open(tmp.resolve("logs/session.mcap"))) {
+            assertEquals(List.of(p1, p2), log.connections().stream().map(LogConnection::port).sorted().toList());
+        }
+    }
+
+    @Test
+    void aPlayerCrashIsRestartedOnTheSamePortAndTheSpyGoesOn() throws Exception {
+        int port = Ports.free("127.0.0.1", 1).get(0);
+        RecordedConnection recorded = RecordedConnection.read(Worlds.traces().resolve(TRACE)).get(0);
+        try (RobotSession session = RobotSession.start(config(Worlds.file("pioneer-laser-sonar.cfg"), port)
+                .withPlayerRestart(RestartPolicy.onFailure(1), WAIT), rec)) {
+            int moved = session.portMap().get(port);
+            long firstPid = session.player().process().pid();
+            session.player().write("crash 7\n");
+            rec.awaitChange(c -> c.tool().equals("Player") && c.to() == ToolState.READY && c.detail().startsWith("ready again"),
+                    WAIT);
+            assertEquals(7, session.player().lastExitCode());
+            assertEquals(1, session.player().restarts());
+            assertNotEquals(firstPid, session.player().process().pid());
+            assertTrue(replayClient(port, recorded).get(60, TimeUnit.SECONDS).matches(), "served by the restarted Player");
+            rec.awaitLine(l -> l.text().startsWith("standin: served port=" + moved + " ") && l.text().endsWith("match=true"),
+                    WAIT);
+
+            session.player().write("crash 9\n");
+            assertEquals(ToolState.FAILED, session.player().finished().get(30, TimeUnit.SECONDS));
+            assertEquals(9, session.player().lastExitCode());
+            assertFalse(session.isClosed(), "a tool that stays down is reported; the session is the user's to end");
+        }
+    }
+
     @Test
     void aBadCfgStartsNothingAndNamesFileAndLine() throws Exception {
         Path cfg = Files.writeString(tmp.resolve("bad.cfg"), "driver\n(\n  provides [ \"6665:laser\" ]\n)\n");
