@@ -35,6 +35,8 @@ public final class SessionParts implements ToolListener {
     private volatile RobotSession session;
     private SessionPartProcess spy;
     private boolean stopping;
+    /** Stops the session if the IDE exits while it runs (else Player would outlive the IDE and keep its ports). */
+    private Thread exitHook;
 
     public SessionParts(ILaunch launch, String sessionName) {
         this.launch = launch;
@@ -57,6 +59,8 @@ public final class SessionParts implements ToolListener {
     /** Called once the session runs: shows the spy as a part of its own. */
     public void started(RobotSession s) {
         this.session = s;
+        exitHook = new Thread(s::close, "stagecraft-session-exit-" + sessionName);
+        Runtime.getRuntime().addShutdownHook(exitHook);
         SessionPartProcess p;
         synchronized (this) {
             p = new SessionPartProcess(SPY_PART, "stagecraft.spy", launch, control(null));
@@ -168,6 +172,11 @@ public final class SessionParts implements ToolListener {
         RobotSession s = session;
         if (s != null) {
             s.close();
+            try {
+                Runtime.getRuntime().removeShutdownHook(exitHook);
+            } catch (IllegalStateException e) {
+                // the JVM is exiting: the hook is running or has run
+            }
             if (spy != null) {
                 spy.stdout("stopped: " + s.spy().totalConnections() + " connections, " + s.pipeline().messages()
                         + " messages, " + (s.spy().bytesForwarded(Direction.CLIENT_TO_SERVER)
