@@ -652,19 +652,48 @@ def wrap_lines(bsn, name, version, imports, extra=()):
 ZSTD_JNI_VERSION = "1.5.7-28"
 
 JOGL_VERSION = "2.6.0"
+# JOGL in OSGi.  Gluegen loads every JNI library (its own and JOGL's) with System.load/loadLibrary
+# called from its own class JNILibLoaderBase, and the JVM binds a JNI library to the class loader of
+# that caller: JOGL's native methods only link if JOGL's classes share gluegen's class loader.  So
+# jogl-all and all natives jars are *fragments* of gluegen-rt (one class loader).  Gluegen's own
+# lookup of "<name>-natives-<os>.jar" beside the class jar cannot work on bundle URLs; the natives
+# fragments therefore declare Bundle-NativeCode, Equinox extracts the library the platform needs and
+# gluegen's fallback System.loadLibrary finds it through the bundle class loader.
+# (os, arch filter, Bundle-NativeCode attributes) per natives classifier; the library list is read
+# from the jar on Central.
+JOGL_NATIVES = [
+    ("natives-linux-amd64", "(& (osgi.os=linux) (osgi.arch=x86_64))", "osname=Linux; processor=x86-64"),
+    ("natives-windows-amd64", "(& (osgi.os=win32) (osgi.arch=x86_64))", "osname=Win32; processor=x86-64"),
+    ("natives-macosx-universal", "(osgi.os=macosx)", "osname=MacOSX; processor=x86-64; processor=aarch64"),
+]
+JOGL_HOST = "org.jogamp.gluegen.rt"
 JOGL = [
     # (groupId, artifactId, classifier, bsn, imports, extra headers)
-    ("org.jogamp.gluegen", "gluegen-rt", None, "org.jogamp.gluegen.rt", "", ["DynamicImport-Package: *"]),
-    ("org.jogamp.gluegen", "gluegen-rt", "natives-linux-amd64", "org.jogamp.gluegen.rt.natives.linux.amd64", "",
-     ["Fragment-Host: org.jogamp.gluegen.rt",
-      "Eclipse-PlatformFilter: (& (osgi.os=linux) (osgi.arch=x86_64))"]),
+    ("org.jogamp.gluegen", "gluegen-rt", None, JOGL_HOST, "", ["DynamicImport-Package: *"]),
     ("org.jogamp.jogl", "jogl-all", None, "org.jogamp.jogl.all",
-     "com.jogamp.common.*,jogamp.common.*,org.eclipse.swt.*;resolution:=optional",
-     ["DynamicImport-Package: *"]),
-    ("org.jogamp.jogl", "jogl-all", "natives-linux-amd64", "org.jogamp.jogl.all.natives.linux.amd64", "",
-     ["Fragment-Host: org.jogamp.jogl.all",
-      "Eclipse-PlatformFilter: (& (osgi.os=linux) (osgi.arch=x86_64))"]),
+     "!com.jogamp.*,!jogamp.*,org.eclipse.swt.*;resolution:=optional", ["Fragment-Host: " + JOGL_HOST]),
 ]
+for _c, _filter, _attrs in JOGL_NATIVES:
+    _suffix = _c[len("natives-"):].replace("-", ".")
+    for _g, _a, _bsn in (("org.jogamp.gluegen", "gluegen-rt", "org.jogamp.gluegen.rt"),
+                         ("org.jogamp.jogl", "jogl-all", "org.jogamp.jogl.all")):
+        JOGL.append((_g, _a, _c, "%s.natives.%s" % (_bsn, _suffix), "",
+                     ["Fragment-Host: " + JOGL_HOST, "Eclipse-PlatformFilter: " + _filter,
+                      ("Bundle-NativeCode", _attrs)]))
+
+
+def native_code_header(central, g, a, c, attrs):
+    """Bundle-NativeCode listing every library in the natives jar's natives/<platform>/ folder."""
+    data = central.jar(g, a, JOGL_VERSION, c)
+    if data is None:
+        raise SystemExit("not on Central: %s:%s:%s:%s" % (g, a, c, JOGL_VERSION))
+    with zipfile.ZipFile(io.BytesIO(data)) as z:
+        libs = sorted(n for n in z.namelist()
+                      if n.startswith("natives/") and not n.endswith("/")
+                      and n.rsplit("/", 1)[1].endswith((".so", ".dll", ".dylib", ".jnilib")))
+    if not libs:
+        raise SystemExit("no native libraries in %s:%s:%s" % (g, a, c))
+    return "Bundle-NativeCode: %s; %s" % ("; ".join(libs), attrs)
 
 
 def main():
@@ -786,6 +815,7 @@ def main():
         w("      </dependencies>")
         for g, a, c, bsn, imports, extra in JOGL:
             ref = "%s:%s:%s:%s" % (g, a, c or "", JOGL_VERSION)
+            extra = [native_code_header(central, g, a, c, x[1]) if isinstance(x, tuple) else x for x in extra]
             w(instructions_xml(ref, wrap_lines(bsn, a + (" " + c if c else ""), JOGL_VERSION, imports, extra)))
         w("      <exclude>antlr:antlr:2.7.7</exclude>")
         w("    </location>")

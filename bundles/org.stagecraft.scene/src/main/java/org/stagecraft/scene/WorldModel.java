@@ -1,0 +1,170 @@
+package org.stagecraft.scene;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
+
+import org.stagecraft.player.codec.MessageBody;
+import org.stagecraft.player.msg.Geometry.DeviceGeom;
+import org.stagecraft.player.msg.Geometry.Pose3d;
+import org.stagecraft.player.msg.Laser;
+import org.stagecraft.player.msg.Position2d;
+import org.stagecraft.player.msg.Ranger;
+import org.stagecraft.player.msg.Sonar;
+import org.stagecraft.streams.StreamKey;
+import org.stagecraft.streams.StreamMessage;
+
+/**
+ * What a Robot View knows about the world: each robot's pose (position2d state), its trail, and where its
+ * devices are mounted (the geometry replies seen on the wire, defaults until then). Fed from bus threads,
+ * read by the renderer on the UI thread: every accessor returns an immutable snapshot.
+ */
+public final class WorldModel {
+    public static final int DATA = 1, RESP_ACK = 4;
+    public static final int GET_GEOM = 1, RANGER_GET_CONFIG = 5, POSITION_STATE = 1, POSITION_DATA_GEOM = 2,
+            SONAR_DATA_GEOM = 2, RANGER_DATA_GEOM = 5;
+
+    private final int trailLength;
+    private final Map<RobotId, Track> robots = new ConcurrentHashMap<>();
+    private final Map<DeviceAddress, Mount> mounts = new ConcurrentHashMap<>();
+    private final Map<DeviceAddress, RangerConfig> configs = new ConcurrentHashMap<>();
+    private final AtomicLong version = new AtomicLong();
+
+    /** @param trailLength how many past poses each robot keeps for its trail */
+    public WorldModel(int trailLength) {
+        this.trailLength = trailLength;
+    }
+
+    public WorldModel() {
+        this(200);
+    }
+
+    /** Takes what it needs from a bus message (pose, geometry, ranger config); true if anything changed. */
+    public boolean accept(StreamMessage m) {
+        MessageBody body = Payloads.body(m);
+        if (body == null) {
+            return false;
+        }
+        StreamKey k = m.key();
+        DeviceAddress dev = DeviceAddress.of(k);
+        boolean changed = false;
+        if (k.messageType() == DATA && k.deviceType() == Position2d.CODE && k.subtype() == POSITION_STATE
+                && body instanceof Position2d.State s) {
+            robots.computeIfAbsent(dev.robot(), Track::new).pose(s, trailLength);
+            changed = true;
+        } else if (isGeometry(k) && body instanceof DeviceGeom g) {
+            mounts.put(dev, new Mount(Pose2.of(g.pose()), finite(g.size().sl()), finite(g.size().sw()), List.of(), true));
+            if (k.deviceType() == Position2d.CODE) {
+                robots.computeIfAbsent(dev.robot(), Track::new);
+            }
+            changed = true;
+        } else if (isGeometry(k) && body instanceof Ranger.Geom g) {
+            mounts.put(dev, new Mount(Pose2.of(g.pose()), finite(g.size().sl()), finite(g.size().sw()),
+                    poses(g.elementPoses()), true));
+            changed = true;
+        } else if (isGeometry(k) && body instanceof Sonar.Geom g) {
+            mounts.put(dev, new Mount(Pose2.ORIGIN, 0, 0, poses(g.poses()), true));
+            changed = true;
+        } else if (k.messageType() == RESP_ACK && k.deviceType() == Ranger.CODE && k.subtype() == RANGER_GET_CONFIG
+                && body instanceof Ranger.Config c) {
+            configs.put(dev, new RangerConfig(c.minAngle(), c.maxAngle(), c.angularRes(), c.minRange(), c.maxRange(), true));
+            changed = true;
+        }
+        if (changed) {
+            version.incrementAndGet();
+        }
+        return changed;
+    }
+
+    /** GET_GEOM replies of any device, and the geometry DATA messages of position2d, sonar and ranger. */
+    static boolean isGeometry(StreamKey k) {
+        if (k.messageType() == RESP_ACK) {
+            return k.subtype() == GET_GEOM && (k.deviceType() == Position2d.CODE || k.deviceType() == Laser.CODE
+                    || k.deviceType() == Ranger.CODE || k.deviceType() == Sonar.CODE || k.deviceType() == 10
+                    || k.deviceType() == 14);
+        }
+        return k.messageType() == DATA && ((k.deviceType() == Position2d.CODE && k.subtype() == POSITION_DATA_GEOM)
+                || (k.deviceType() == Sonar.CODE && k.subtype() == SONAR_DATA_GEOM)
+                || (k.deviceType() == Ranger.CODE && k.subtype() == RANGER_DATA_GEOM));
+    }
+
+    /** Incremented by every change: a renderer rebuilds only when this or its data moved. */
+    public long version() {
+        return version.get();
+    }
+
+    /** Every robot seen so far (by position2d data or geometry), in address order. */
+    public List<RobotState> robots() {
+        Map<RobotId, RobotState> sorted = new TreeMap<>();
+        robots.forEach((id, t) -> sorted.put(id, t.snapshot(mount(new DeviceAddress(id, Position2d.CODE, 0)))));
+        return List.copyOf(sorted.values());
+    }
+
+    /** The robot's state; a robot never seen stands at the origin. */
+    public RobotState robot(RobotId id) {
+        Track t = robots.get(id);
+        Mount body = mount(new DeviceAddress(id, Position2d.CODE, 0));
+        return t == null ? new RobotState(id, Pose2.ORIGIN, Pose2.ORIGIN, false, List.of(), body, false) : t.snapshot(body);
+    }
+
+    /** Where the device is on its robot: the geometry seen on the wire, or {@link Mount#DEFAULT}. */
+    public Mount mount(DeviceAddress dev) {
+        return mounts.getOrDefault(dev, Mount.DEFAULT);
+    }
+
+    public RangerConfig rangerConfig(DeviceAddress dev) {
+        return configs.getOrDefault(dev, RangerConfig.DEFAULT_FAN);
+    }
+
+    /** The device's pose in the world: robot pose composed with the mount pose. */
+    public Pose2 devicePose(DeviceAddress dev) {
+        return robot(dev.robot()).pose().compose(mount(dev).pose());
+    }
+
+    private static List<Pose2> poses(List<Pose3d> ps) {
+        List<Pose2> out = new ArrayList<>(ps.size());
+        for (Pose3d p : ps) {
+            out.add(Pose2.of(p));
+        }
+        return out;
+    }
+
+    // Stage's position2d geometry has uninitialised doubles (README quirk 4); sizes must stay sane.
+    private static double finite(double v) {
+        return Double.isFinite(v) && Math.abs(v) < 1e6 ? Math.abs(v) : 0;
+    }
+
+    private static final class Track {
+        private final RobotId id;
+        private final ArrayDeque<Pose2> trail = new ArrayDeque<>();
+        private Pose2 pose = Pose2.ORIGIN, velocity = Pose2.ORIGIN;
+        private boolean stall, seen;
+
+        Track(RobotId id) {
+            this.id = id;
+        }
+
+        synchronized void pose(Position2d.State s, int trailLength) {
+            pose = Pose2.of(s.pos());
+            velocity = Pose2.of(s.vel());
+            stall = s.stall() != 0;
+            seen = true;
+            Pose2 last = trail.peekLast();
+            // a robot standing still adds nothing to its trail
+            if (last == null || Math.hypot(last.x() - pose.x(), last.y() - pose.y()) > 0.01) {
+                trail.addLast(pose);
+                while (trail.size() > trailLength) {
+                    trail.removeFirst();
+                }
+            }
+        }
+
+        synchronized RobotState snapshot(Mount body) {
+            return new RobotState(id, pose, velocity, stall, List.copyOf(trail), body, seen);
+        }
+    }
+}
