@@ -25,6 +25,8 @@ public final class LayerFeed implements AutoCloseable {
     private final Map<StreamKey, StreamMessage> latest = new ConcurrentHashMap<>();
     private final AtomicLong version = new AtomicLong();
     private final Runnable onChange;
+    private final java.util.Queue<StreamMessage> unseen = new java.util.concurrent.ConcurrentLinkedQueue<>();
+    private volatile boolean keepAll;
     private volatile Subscription subscription;
 
     /** @param onChange told (on a bus thread) after each new message, e.g. to request a redraw */
@@ -34,14 +36,36 @@ public final class LayerFeed implements AutoCloseable {
 
     /** Subscribes (latest-value) to {@code pattern} on {@code bus}; an earlier subscription is closed. */
     public LayerFeed subscribe(StreamBus bus, StreamPattern pattern) {
+        return subscribe(bus, pattern, DeliveryPolicy.latestValue());
+    }
+
+    /**
+     * Subscribes with another policy. With a lossless policy every message is also kept until
+     * {@link #drainUnseen()} takes it: for renderers that accumulate (map tiles), not for those that show
+     * the present.
+     */
+    public LayerFeed subscribe(StreamBus bus, StreamPattern pattern, DeliveryPolicy policy) {
         close();
-        subscription = bus.subscribe(pattern, DeliveryPolicy.latestValue(), this::accept);
+        keepAll = policy.isLossless();
+        subscription = bus.subscribe(pattern, policy, this::accept);
         return this;
+    }
+
+    /** Messages accepted since the last call, oldest first (only kept for lossless subscriptions). */
+    public List<StreamMessage> drainUnseen() {
+        List<StreamMessage> out = new ArrayList<>();
+        for (StreamMessage m = unseen.poll(); m != null; m = unseen.poll()) {
+            out.add(m);
+        }
+        return out;
     }
 
     /** Takes one message (the bus consumer; tests and replays may call it directly). */
     public void accept(StreamMessage m) {
         latest.put(m.key(), m);
+        if (keepAll) {
+            unseen.add(m);
+        }
         version.incrementAndGet();
         onChange.run();
     }

@@ -32,6 +32,7 @@ public final class WorldModel {
     private final Map<RobotId, Track> robots = new ConcurrentHashMap<>();
     private final Map<DeviceAddress, Mount> mounts = new ConcurrentHashMap<>();
     private final Map<DeviceAddress, RangerConfig> configs = new ConcurrentHashMap<>();
+    private final Map<DeviceAddress, MessageBody> geometries = new ConcurrentHashMap<>();
     private final AtomicLong version = new AtomicLong();
 
     /** @param trailLength how many past poses each robot keeps for its trail */
@@ -52,6 +53,9 @@ public final class WorldModel {
         StreamKey k = m.key();
         DeviceAddress dev = DeviceAddress.of(k);
         boolean changed = false;
+        if (isGeometry(k)) {
+            geometries.put(dev, body);
+        }
         if (k.messageType() == DATA && k.deviceType() == Position2d.CODE && k.subtype() == POSITION_STATE
                 && body instanceof Position2d.State s) {
             robots.computeIfAbsent(dev.robot(), Track::new).pose(s, trailLength);
@@ -69,6 +73,11 @@ public final class WorldModel {
         } else if (isGeometry(k) && body instanceof Sonar.Geom g) {
             mounts.put(dev, new Mount(Pose2.ORIGIN, 0, 0, poses(g.poses()), true));
             changed = true;
+        } else if (isGeometry(k) && body instanceof org.stagecraft.player.msg.Fiducial.Geom g) {
+            mounts.put(dev, new Mount(Pose2.of(g.pose()), finite(g.size().sl()), finite(g.size().sw()), List.of(), true));
+            changed = true;
+        } else if (isGeometry(k)) {
+            changed = true; // e.g. bumper geometry: kept as it came, see geometry()
         } else if (k.messageType() == RESP_ACK && k.deviceType() == Ranger.CODE && k.subtype() == RANGER_GET_CONFIG
                 && body instanceof Ranger.Config c) {
             configs.put(dev, new RangerConfig(c.minAngle(), c.maxAngle(), c.angularRes(), c.minRange(), c.maxRange(), true));
@@ -114,6 +123,11 @@ public final class WorldModel {
     /** Where the device is on its robot: the geometry seen on the wire, or {@link Mount#DEFAULT}. */
     public Mount mount(DeviceAddress dev) {
         return mounts.getOrDefault(dev, Mount.DEFAULT);
+    }
+
+    /** The device's last geometry message as decoded (e.g. Bumper.Geom), or null if none was seen. */
+    public MessageBody geometry(DeviceAddress dev) {
+        return geometries.get(dev);
     }
 
     public RangerConfig rangerConfig(DeviceAddress dev) {

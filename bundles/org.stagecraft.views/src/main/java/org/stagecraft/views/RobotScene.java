@@ -1,0 +1,228 @@
+package org.stagecraft.views;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+
+import org.stagecraft.scene.Camera;
+import org.stagecraft.scene.LayerFeed;
+import org.stagecraft.scene.LayerSpec;
+import org.stagecraft.scene.LayerStack;
+import org.stagecraft.scene.SceneFeed;
+import org.stagecraft.scene.WorldModel;
+import org.stagecraft.scene.shapes.FloatList;
+import org.stagecraft.scene.shapes.GridShape;
+import org.stagecraft.streams.StreamBus;
+
+import com.jogamp.opengl.GL;
+import com.jogamp.opengl.GL2;
+import com.jogamp.opengl.fixedfunc.GLMatrixFunc;
+import com.jogamp.opengl.util.gl2.GLUT;
+
+/**
+ * Everything one Robot View draws, independent of the widget: the world model, the camera, the layers
+ * (each a renderer with its feed) and the frame itself. The view, the pixel tests and the benchmark all
+ * draw through {@link #render}.
+ */
+public final class RobotScene implements AutoCloseable {
+    /** Background grey and grid shades. */
+    public static final float BACKGROUND = 0.92f, MINOR_GRID = 0.84f, MAJOR_GRID = 0.70f;
+
+    private final WorldModel world;
+    private final Camera camera;
+    private final LayerStack layers = new LayerStack(List.of());
+    private final Map<String, StreamRenderer> renderers = new ConcurrentHashMap<>();
+    private final Map<String, LayerFeed> feeds = new ConcurrentHashMap<>();
+    private final List<StreamRenderer> retired = new ArrayList<>();
+    private final Runnable onChange;
+    private StreamBus bus;
+    private SceneFeed sceneFeed;
+    private boolean grid = true;
+    private final FloatList minor = new FloatList(), major = new FloatList();
+    private GLUT glut;
+    private long frames;
+
+    /** @param onChange told (on bus threads) whenever new data arrived: the view schedules a redraw */
+    public RobotScene(WorldModel world, Camera camera, Runnable onChange) {
+        this.world = world;
+        this.camera = camera;
+        this.onChange = onChange;
+    }
+
+    public WorldModel world() {
+        return world;
+    }
+
+    public Camera camera() {
+        return camera;
+    }
+
+    /** Starts (or moves) the scene's subscriptions to {@code newBus}. */
+    public synchronized void connect(StreamBus newBus) {
+        disconnect();
+        bus = newBus;
+        sceneFeed = new SceneFeed(bus, world, onChange);
+        for (LayerSpec l : layers.inDrawOrder()) {
+            feeds.get(l.id()).subscribe(bus, l.pattern(), renderers.get(l.id()).deliveryPolicy());
+        }
+    }
+
+    public synchronized void disconnect() {
+        if (sceneFeed != null) {
+            sceneFeed.close();
+            sceneFeed = null;
+        }
+        feeds.values().forEach(LayerFeed::close);
+        bus = null;
+    }
+
+    /** Adds a layer (or replaces the one with its id, renderer and all). */
+    public synchronized void addLayer(LayerSpec spec, StreamRenderer renderer) {
+        removeLayer(spec.id());
+        LayerFeed feed = new LayerFeed(onChange);
+        renderers.put(spec.id(), renderer);
+        feeds.put(spec.id(), feed);
+        layers.put(spec);
+        if (bus != null) {
+            feed.subscribe(bus, spec.pattern(), renderer.deliveryPolicy());
+        }
+    }
+
+    public synchronized void removeLayer(String id) {
+        LayerFeed f = feeds.remove(id);
+        if (f != null) {
+            f.close();
+        }
+        StreamRenderer r = renderers.remove(id);
+        if (r != null) {
+            retired.add(r); // its GPU data is freed at the next frame, when a context is current
+        }
+        layers.remove(id);
+    }
+
+    /** Changes a layer's look, order or pattern (a new pattern resubscribes it). */
+    public synchronized void updateLayer(LayerSpec spec) {
+        LayerSpec old = layers.get(spec.id());
+        if (old == null) {
+            throw new IllegalArgumentException("no layer '" + spec.id() + "'");
+        }
+        if (!old.rendererId().equals(spec.rendererId())) {
+            throw new IllegalArgumentException("layer '" + spec.id() + "' keeps its renderer " + old.rendererId());
+        }
+        layers.put(spec);
+        if (bus != null && !old.pattern().equals(spec.pattern())) {
+            feeds.get(spec.id()).subscribe(bus, spec.pattern(), renderers.get(spec.id()).deliveryPolicy());
+        }
+        onChange.run();
+    }
+
+    public List<LayerSpec> layers() {
+        return layers.inDrawOrder();
+    }
+
+    public StreamRenderer renderer(String layerId) {
+        return renderers.get(layerId);
+    }
+
+    public LayerFeed feed(String layerId) {
+        return feeds.get(layerId);
+    }
+
+    public void showGrid(boolean show) {
+        grid = show;
+    }
+
+    /** Frames rendered so far. */
+    public long frames() {
+        return frames;
+    }
+
+    /** Draws one frame into the current GL context's {@code width} x {@code height} viewport. */
+    public void render(GL2 gl, int width, int height) {
+        List<StreamRenderer> dead;
+        synchronized (this) {
+            dead = new ArrayList<>(retired);
+            retired.clear();
+        }
+        dead.forEach(r -> r.disposeGl(gl));
+
+        camera.viewport(width, height);
+        camera.track(world);
+        gl.glViewport(0, 0, width, height);
+        gl.glClearColor(BACKGROUND, BACKGROUND, BACKGROUND, 1);
+        gl.glClear(GL.GL_COLOR_BUFFER_BIT);
+        gl.glMatrixMode(GLMatrixFunc.GL_PROJECTION);
+        gl.glLoadIdentity();
+        gl.glOrtho(camera.left(), camera.right(), camera.bottom(), camera.top(), -1, 1);
+        gl.glMatrixMode(GLMatrixFunc.GL_MODELVIEW);
+        gl.glLoadIdentity();
+        gl.glDisable(GL.GL_DEPTH_TEST);
+        gl.glEnable(GL.GL_BLEND);
+        gl.glBlendFunc(GL.GL_SRC_ALPHA, GL.GL_ONE_MINUS_SRC_ALPHA);
+
+        if (grid) {
+            drawGrid(gl);
+        }
+        for (LayerSpec l : layers.inDrawOrder()) {
+            StreamRenderer r = renderers.get(l.id());
+            LayerFeed f = feeds.get(l.id());
+            if (!l.visible() || r == null || f == null) {
+                continue;
+            }
+            r.frame(gl, new RenderInput(l, f.snapshot(), f.drainUnseen(), f.version(), world, camera));
+        }
+        frames++;
+    }
+
+    private void drawGrid(GL2 gl) {
+        double spacing = GridShape.spacing(camera);
+        minor.clear();
+        major.clear();
+        GridShape.lines(camera, spacing, minor, major);
+        gl.glLineWidth(1);
+        lines(gl, minor, MINOR_GRID);
+        lines(gl, major, MAJOR_GRID);
+        // metres along the bottom and left edges, at the major lines
+        if (glut == null) {
+            glut = new GLUT();
+        }
+        gl.glColor4f(0.35f, 0.35f, 0.35f, 1);
+        double step = spacing * 5;
+        for (double x = Math.ceil(camera.left() / step) * step; x <= camera.right(); x += step) {
+            gl.glWindowPos2d(camera.worldToWindowX(x) + 3, 3);
+            glut.glutBitmapString(GLUT.BITMAP_HELVETICA_10, label(x));
+        }
+        for (double y = Math.ceil(camera.bottom() / step) * step; y <= camera.top(); y += step) {
+            gl.glWindowPos2d(3, camera.worldToWindowY(y) + 3);
+            glut.glutBitmapString(GLUT.BITMAP_HELVETICA_10, label(y));
+        }
+    }
+
+    private static String label(double metres) {
+        double r = Math.abs(metres) < 1e-9 ? 0 : metres;
+        return (r == Math.rint(r) ? Long.toString((long) r) : String.format("%.1f", r)) + " m";
+    }
+
+    private static void lines(GL2 gl, FloatList v, float grey) {
+        gl.glColor4f(grey, grey, grey, 1);
+        gl.glBegin(GL.GL_LINES);
+        float[] a = v.array();
+        for (int i = 0; i < v.size(); i += 2) {
+            gl.glVertex2f(a[i], a[i + 1]);
+        }
+        gl.glEnd();
+    }
+
+    /** Frees every renderer's GPU data; the GL context must be current. */
+    public synchronized void disposeGl(GL2 gl) {
+        renderers.values().forEach(r -> r.disposeGl(gl));
+        retired.forEach(r -> r.disposeGl(gl));
+        retired.clear();
+    }
+
+    @Override
+    public void close() {
+        disconnect();
+    }
+}

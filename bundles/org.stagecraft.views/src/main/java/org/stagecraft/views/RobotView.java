@@ -1,0 +1,329 @@
+package org.stagecraft.views;
+
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+
+import org.eclipse.core.runtime.ILog;
+import org.eclipse.core.runtime.IStatus;
+import org.eclipse.core.runtime.Platform;
+import org.eclipse.jface.action.Action;
+import org.eclipse.jface.action.IAction;
+import org.eclipse.jface.action.IMenuManager;
+import org.eclipse.jface.action.MenuManager;
+import org.eclipse.jface.action.Separator;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.RGB;
+import org.eclipse.swt.widgets.ColorDialog;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Event;
+import org.eclipse.ui.IMemento;
+import org.eclipse.ui.IViewSite;
+import org.eclipse.ui.PartInitException;
+import org.eclipse.ui.part.ViewPart;
+import org.stagecraft.core.streams.WorkbenchBus;
+import org.stagecraft.scene.Camera;
+import org.stagecraft.scene.DefaultLayers;
+import org.stagecraft.scene.LayerSpec;
+import org.stagecraft.scene.RobotId;
+import org.stagecraft.scene.RobotState;
+import org.stagecraft.scene.ViewSetup;
+import org.stagecraft.scene.WorldModel;
+import org.stagecraft.streams.StreamBus;
+import org.stagecraft.views.internal.RedrawThrottle;
+import org.stagecraft.views.internal.ViewMemento;
+
+import com.jogamp.opengl.GL2;
+import com.jogamp.opengl.GLAutoDrawable;
+import com.jogamp.opengl.GLEventListener;
+import com.jogamp.opengl.swt.GLCanvas;
+
+/**
+ * The Robot View: one OpenGL canvas showing the robots of the workbench's stream bus in the world frame,
+ * through layers (a renderer bound to a stream pattern each). Any number can be open (secondary ids);
+ * each keeps its layers and camera in its memento across workbench restarts.
+ *
+ * <p>Mouse: drag to pan, wheel to zoom at the pointer, double-click a robot to follow it (elsewhere: stop
+ * following). The view menu holds the layers (visibility, colour, opacity, order), follow and reset.
+ */
+public class RobotView extends ViewPart {
+    public static final String ID = "org.stagecraft.views.robot";
+    /** At most this many frames per second; data arriving faster is merged (newest wins). */
+    public static final int MAX_FPS = 60;
+
+    private static final ILog LOG = ILog.of(Platform.getBundle("org.stagecraft.views"));
+
+    private ViewSetup restored;
+    private RobotScene scene;
+    private GLCanvas canvas;
+    private RedrawThrottle redraw;
+    private Consumer<FramePixels> readback;
+    private int dragX, dragY;
+    private boolean dragging;
+
+    @Override
+    public void init(IViewSite site, IMemento memento) throws PartInitException {
+        super.init(site, memento);
+        if (memento != null) {
+            restored = ViewMemento.read(memento, p -> LOG.warn(p));
+        }
+    }
+
+    @Override
+    public void createPartControl(Composite parent) {
+        canvas = GlSurfaces.create(parent);
+        redraw = new RedrawThrottle(parent.getDisplay(), 1000 / MAX_FPS, this::drawNow);
+        scene = new RobotScene(new WorldModel(), new Camera(), redraw::request);
+        applySetup(restored != null ? restored : new ViewSetup(DefaultLayers.create(), Map.of()));
+        canvas.addGLEventListener(new Drawer());
+        installMouse();
+        installMenu();
+        connect(WorkbenchBus.get());
+    }
+
+    /** Subscribes the view's layers to {@code bus} (the workbench bus unless a test says otherwise). */
+    public void connect(StreamBus bus) {
+        scene.connect(bus);
+        redraw.request();
+    }
+
+    public RobotScene scene() {
+        return scene;
+    }
+
+    /** Frames drawn so far. */
+    public long frames() {
+        return scene.frames();
+    }
+
+    /** The layers and camera as they would be saved. */
+    public ViewSetup setup() {
+        return new ViewSetup(scene.layers(), scene.camera().toAttributes());
+    }
+
+    /** Replaces the layers (renderers from the extension point) and restores the camera. */
+    public void applySetup(ViewSetup setup) {
+        for (LayerSpec l : scene.layers()) {
+            scene.removeLayer(l.id());
+        }
+        Consumer<IStatus> problems = LOG::log;
+        for (Map.Entry<LayerSpec, StreamRenderer> e : RendererExtensionRegistry.instantiate(setup.layers(),
+                RendererExtensionRegistry.load(), problems)) {
+            scene.addLayer(e.getKey(), e.getValue());
+        }
+        scene.camera().fromAttributes(setup.camera());
+        redraw.request();
+    }
+
+    /** Changes one layer (visibility, colour, opacity, order or pattern) and redraws. */
+    public void updateLayer(LayerSpec spec) {
+        scene.updateLayer(spec);
+    }
+
+    @Override
+    public void saveState(IMemento memento) {
+        ViewMemento.write(memento, setup());
+    }
+
+    /** Draws a frame now (UI thread) and returns what it drew, read back from the back buffer. */
+    public FramePixels capture() {
+        FramePixels[] out = new FramePixels[1];
+        readback = p -> out[0] = p;
+        try {
+            canvas.display();
+        } finally {
+            readback = null;
+        }
+        return out[0];
+    }
+
+    /** Asks for a redraw (merged with pending ones). */
+    public void requestRedraw() {
+        redraw.request();
+    }
+
+    @Override
+    public void setFocus() {
+        canvas.setFocus();
+    }
+
+    @Override
+    public void dispose() {
+        if (scene != null) {
+            scene.close();
+        }
+        super.dispose(); // the canvas goes with the part; its GLEventListener.dispose frees GPU data
+    }
+
+    private void drawNow() {
+        if (canvas != null && !canvas.isDisposed() && canvas.isVisible()) {
+            canvas.display();
+        }
+    }
+
+    private final class Drawer implements GLEventListener {
+        @Override
+        public void init(GLAutoDrawable d) {
+            d.getGL().setSwapInterval(0); // frames are paced by the data, not the (virtual) display
+        }
+
+        @Override
+        public void display(GLAutoDrawable d) {
+            GL2 gl = d.getGL().getGL2();
+            int w = d.getSurfaceWidth(), h = d.getSurfaceHeight();
+            scene.render(gl, w, h);
+            Consumer<FramePixels> r = readback;
+            if (r != null) {
+                r.accept(FramePixels.read(gl, w, h)); // before the swap: the back buffer holds this frame
+            }
+        }
+
+        @Override
+        public void reshape(GLAutoDrawable d, int x, int y, int w, int h) {
+            // the scene sets the viewport every frame
+        }
+
+        @Override
+        public void dispose(GLAutoDrawable d) {
+            scene.disposeGl(d.getGL().getGL2());
+        }
+    }
+
+    private void installMouse() {
+        canvas.addListener(SWT.MouseDown, e -> {
+            if (e.button == 1) {
+                dragging = true;
+                dragX = e.x;
+                dragY = e.y;
+            }
+        });
+        canvas.addListener(SWT.MouseUp, e -> dragging = false);
+        canvas.addListener(SWT.MouseMove, e -> {
+            if (dragging) {
+                scene.camera().pan(e.x - dragX, e.y - dragY);
+                dragX = e.x;
+                dragY = e.y;
+                redraw.request();
+            }
+        });
+        canvas.addListener(SWT.MouseVerticalWheel, e -> {
+            Camera c = scene.camera();
+            c.zoomAt(e.x + 0.5, c.mouseToWindowY(e.y), e.count > 0 ? 1.25 : 0.8);
+            redraw.request();
+        });
+        canvas.addListener(SWT.MouseDoubleClick, this::followAt);
+    }
+
+    private void followAt(Event e) {
+        Camera c = scene.camera();
+        double x = c.windowToWorldX(e.x + 0.5), y = c.windowToWorldY(c.mouseToWindowY(e.y));
+        RobotId nearest = null;
+        double best = Math.max(0.5, 20 * c.metresPerPixel());
+        for (RobotState r : scene.world().robots()) {
+            double d = Math.hypot(r.pose().x() - x, r.pose().y() - y);
+            if (d < best) {
+                best = d;
+                nearest = r.id();
+            }
+        }
+        c.follow(nearest);
+        redraw.request();
+    }
+
+    private void installMenu() {
+        IMenuManager menu = getViewSite().getActionBars().getMenuManager();
+        menu.setRemoveAllWhenShown(true);
+        menu.addMenuListener(m -> {
+            for (LayerSpec l : scene.layers()) {
+                m.add(layerMenu(l));
+            }
+            m.add(new Separator());
+            MenuManager follow = new MenuManager("Follow");
+            follow.add(action("None", IAction.AS_RADIO_BUTTON, scene.camera().followed() == null, () -> scene.camera().follow(null)));
+            for (RobotState r : scene.world().robots()) {
+                follow.add(action(r.id().address(), IAction.AS_RADIO_BUTTON, r.id().equals(scene.camera().followed()),
+                        () -> scene.camera().follow(r.id())));
+            }
+            m.add(follow);
+            m.add(action("Centre on robots", IAction.AS_PUSH_BUTTON, false, this::centreOnRobots));
+        });
+        // the menu must exist before the first "about to show"
+        menu.add(new Separator());
+    }
+
+    private MenuManager layerMenu(LayerSpec l) {
+        MenuManager m = new MenuManager(l.name());
+        m.add(action("Visible", IAction.AS_CHECK_BOX, l.visible(), () -> updateLayer(current(l).visible(!current(l).visible()))));
+        m.add(action("Colour...", IAction.AS_PUSH_BUTTON, false, () -> {
+            ColorDialog d = new ColorDialog(canvas.getShell());
+            LayerSpec c = current(l);
+            d.setRGB(new RGB((c.rgb() >> 16) & 0xFF, (c.rgb() >> 8) & 0xFF, c.rgb() & 0xFF));
+            RGB rgb = d.open();
+            if (rgb != null) {
+                updateLayer(c.colour((rgb.red << 16) | (rgb.green << 8) | rgb.blue, c.alpha()));
+            }
+        }));
+        MenuManager opacity = new MenuManager("Opacity");
+        for (int pct : new int[] { 100, 75, 50, 30, 15 }) {
+            opacity.add(action(pct + " %", IAction.AS_RADIO_BUTTON, Math.round(l.alpha() * 100) == pct,
+                    () -> updateLayer(current(l).colour(current(l).rgb(), pct / 100.0))));
+        }
+        m.add(opacity);
+        m.add(action("Draw later (on top)", IAction.AS_PUSH_BUTTON, false, () -> moveLayer(l, +1)));
+        m.add(action("Draw earlier (below)", IAction.AS_PUSH_BUTTON, false, () -> moveLayer(l, -1)));
+        return m;
+    }
+
+    /** Swaps the layer's draw order with its neighbour's. */
+    private void moveLayer(LayerSpec l, int direction) {
+        List<LayerSpec> layers = scene.layers();
+        int i = layers.indexOf(current(l)), j = i + direction;
+        if (i < 0 || j < 0 || j >= layers.size()) {
+            return;
+        }
+        LayerSpec a = layers.get(i), b = layers.get(j);
+        int oa = a.order(), ob = b.order();
+        if (oa == ob) {
+            ob = oa + direction;
+        }
+        updateLayer(a.order(ob));
+        updateLayer(b.order(oa));
+    }
+
+    private LayerSpec current(LayerSpec l) {
+        for (LayerSpec c : scene.layers()) {
+            if (c.id().equals(l.id())) {
+                return c;
+            }
+        }
+        return l;
+    }
+
+    private void centreOnRobots() {
+        List<RobotState> robots = scene.world().robots();
+        if (robots.isEmpty()) {
+            scene.camera().centreOn(0, 0);
+        } else {
+            double x = 0, y = 0;
+            for (RobotState r : robots) {
+                x += r.pose().x();
+                y += r.pose().y();
+            }
+            scene.camera().follow(null);
+            scene.camera().centreOn(x / robots.size(), y / robots.size());
+        }
+        redraw.request();
+    }
+
+    private Action action(String text, int style, boolean checked, Runnable run) {
+        Action a = new Action(text, style) {
+            @Override
+            public void run() {
+                run.run();
+                redraw.request();
+            }
+        };
+        a.setChecked(checked);
+        return a;
+    }
+}
