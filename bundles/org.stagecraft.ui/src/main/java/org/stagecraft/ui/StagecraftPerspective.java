@@ -7,12 +7,15 @@ import org.eclipse.ui.console.IConsoleConstants;
 
 /**
  * The Stagecraft perspective: editor area in the middle, Project Explorer on the left,
- * Console and Problems at the bottom, Outline on the right.
+ * Console and Problems at the bottom, the Robot View on the right of the editor with Outline beside it;
+ * further Robot Views (Window ▸ New Robot View) open below the first.
  */
 public class StagecraftPerspective implements IPerspectiveFactory {
 
     /** Id of the perspective (plugin.xml, plugin_customization.ini). */
     public static final String ID = "org.stagecraft.ui.perspective";
+    /** The Robot View (org.stagecraft.views); by id, so that this bundle does not depend on the GL one. */
+    public static final String ROBOT_VIEW_ID = "org.stagecraft.views.robot";
 
     @Override
     public void createInitialLayout(IPageLayout layout) {
@@ -26,13 +29,20 @@ public class StagecraftPerspective implements IPerspectiveFactory {
         bottom.addView(IConsoleConstants.ID_CONSOLE_VIEW);
         bottom.addView(IPageLayout.ID_PROBLEM_VIEW);
 
-        IFolderLayout right = layout.createFolder("org.stagecraft.ui.right", IPageLayout.RIGHT, 0.75f, editorArea);
+        IFolderLayout robot = layout.createFolder("org.stagecraft.ui.robot", IPageLayout.RIGHT, 0.45f, editorArea);
+        robot.addView(ROBOT_VIEW_ID);
+        IFolderLayout moreRobots = layout.createFolder("org.stagecraft.ui.robots", IPageLayout.BOTTOM, 0.5f,
+                "org.stagecraft.ui.robot");
+        moreRobots.addPlaceholder(ROBOT_VIEW_ID + ":*");
+
+        IFolderLayout right = layout.createFolder("org.stagecraft.ui.right", IPageLayout.RIGHT, 0.75f, "org.stagecraft.ui.robot");
         right.addView(IPageLayout.ID_OUTLINE);
 
         layout.addShowViewShortcut(IPageLayout.ID_PROJECT_EXPLORER);
         layout.addShowViewShortcut(IConsoleConstants.ID_CONSOLE_VIEW);
         layout.addShowViewShortcut(IPageLayout.ID_PROBLEM_VIEW);
         layout.addShowViewShortcut(IPageLayout.ID_OUTLINE);
+        layout.addShowViewShortcut(ROBOT_VIEW_ID);
         layout.addPerspectiveShortcut(ID);
     }
 }
