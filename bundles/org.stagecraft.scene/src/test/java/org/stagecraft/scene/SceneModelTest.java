@@ -164,6 +164,33 @@ class SceneModelTest {
     }
 
     @Test
+    void zoomedOutScansDropOnlyBeamsWithinTheSpacingOfAKeptOne() {
+        int n = 181;
+        double[] b = new double[n], r = new double[n];
+        for (int i = 0; i < n; i++) {
+            b[i] = Math.toRadians(i - 90);
+            r[i] = 1 + (i % 7) * 0.01;
+        }
+        FloatList all = new FloatList(), kept = new FloatList(), fan = new FloatList();
+        SensorShapes.scan(Pose2.ORIGIN, b, r, n, 8, 0, null, all, null);
+        SensorShapes.scan(Pose2.ORIGIN, b, r, n, 8, 0.05, fan, kept, null);
+        assertEquals(n, all.vertices());
+        assertTrue(kept.vertices() < n / 2, "kept " + kept.vertices());
+        assertEquals(all.get(0), kept.get(0));
+        assertEquals(all.get(2 * n - 1), kept.get(kept.size() - 1), "the last beam is kept");
+        assertEquals(3 * (kept.vertices() - 1), fan.vertices());
+        for (int i = 0; i < n; i++) {
+            double x = all.get(2 * i), y = all.get(2 * i + 1), nearest = Double.MAX_VALUE;
+            for (int k = 0; k < kept.vertices(); k++) {
+                nearest = Math.min(nearest, Math.max(Math.abs(kept.get(2 * k) - x), Math.abs(kept.get(2 * k + 1) - y)));
+            }
+            assertTrue(nearest < 0.05 + 1e-6, "beam " + i + " is " + nearest + " m from a kept one");
+        }
+        assertEquals(6, SensorShapes.coneSegments(2, Math.toRadians(15), 0.01, 6));
+        assertEquals(1, SensorShapes.coneSegments(0.2, Math.toRadians(15), 0.2, 6));
+    }
+
+    @Test
     void gridSpacingKeepsLinesApart() {
         Camera c = new Camera(0, 0, 0.02);
         c.viewport(800, 600);

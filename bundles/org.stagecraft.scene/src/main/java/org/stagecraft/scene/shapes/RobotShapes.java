@@ -31,12 +31,18 @@ public final class RobotShapes {
         triangles.add(body.toParentX(-hl * 0.2, -hw * 0.6), body.toParentY(-hl * 0.2, -hw * 0.6));
     }
 
-    /** The trail as line segments, oldest first, ending at the current pose. */
-    public static void trail(RobotState r, FloatList lines) {
+    /** The trail as line segments, oldest first, ending at the current pose; points closer than {@code minStep} merged. */
+    public static void trail(RobotState r, double minStep, FloatList lines) {
         List<Pose2> t = r.trail();
+        Pose2 from = t.isEmpty() ? null : t.get(0);
         for (int i = 1; i < t.size(); i++) {
-            lines.add(t.get(i - 1).x(), t.get(i - 1).y());
-            lines.add(t.get(i).x(), t.get(i).y());
+            Pose2 to = t.get(i);
+            if (i < t.size() - 1 && Math.hypot(to.x() - from.x(), to.y() - from.y()) < minStep) {
+                continue;
+            }
+            lines.add(from.x(), from.y());
+            lines.add(to.x(), to.y());
+            from = to;
         }
     }
 

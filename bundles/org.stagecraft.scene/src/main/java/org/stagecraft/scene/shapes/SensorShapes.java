@@ -29,14 +29,29 @@ public final class SensorShapes {
      */
     public static void scan(Pose2 sensor, double[] bearings, double[] ranges, int count, double maxRange, FloatList fan,
             FloatList hits, FloatList outline) {
+        scan(sensor, bearings, ranges, count, maxRange, 0, fan, hits, outline);
+    }
+
+    /**
+     * As {@link #scan(Pose2, double[], double[], int, double, FloatList, FloatList, FloatList)}, leaving out
+     * beams whose end lies within {@code minSpacing} metres of the last beam end kept (the first and last
+     * beam are always kept). With {@code minSpacing} below a pixel the picture is the same, with far fewer
+     * (and no sub-pixel) triangles when zoomed out: a software rasteriser's cost is mostly per triangle.
+     */
+    public static void scan(Pose2 sensor, double[] bearings, double[] ranges, int count, double maxRange,
+            double minSpacing, FloatList fan, FloatList hits, FloatList outline) {
         double px = 0, py = 0;
+        boolean first = true;
         for (int i = 0; i < count; i++) {
             double r = Math.max(0, Math.min(ranges[i], maxRange > 0 ? maxRange : ranges[i]));
             if (!Double.isFinite(r)) {
                 continue;
             }
             double x = hitX(sensor, bearings[i], r), y = hitY(sensor, bearings[i], r);
-            if (i > 0) {
+            if (!first && i < count - 1 && minSpacing > 0 && Math.abs(x - px) < minSpacing && Math.abs(y - py) < minSpacing) {
+                continue;
+            }
+            if (!first) {
                 if (fan != null) {
                     fan.add(sensor.x(), sensor.y());
                     fan.add(px, py);
@@ -52,7 +67,14 @@ public final class SensorShapes {
             }
             px = x;
             py = y;
+            first = false;
         }
+    }
+
+    /** Slices for a sonar cone: about one per 4 pixels of arc, 1 to {@code max}. */
+    public static int coneSegments(double range, double aperture, double metresPerPixel, int max) {
+        double arcPixels = range * aperture / Math.max(1e-9, metresPerPixel);
+        return (int) Math.max(1, Math.min(max, Math.ceil(arcPixels / 4)));
     }
 
     /**

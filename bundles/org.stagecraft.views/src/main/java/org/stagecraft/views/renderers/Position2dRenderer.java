@@ -26,6 +26,11 @@ public class Position2dRenderer extends ShapeRenderer {
     private final GlBatch velocity = batch(new GlBatch(GL.GL_LINES, new Tint(0.45f, 1, true)).size(2));
 
     @Override
+    protected boolean zoomDependent() {
+        return true;
+    }
+
+    @Override
     protected void build(RenderInput in) {
         Set<RobotId> robots = new LinkedHashSet<>();
         for (StreamMessage m : in.latest()) {
@@ -33,7 +38,7 @@ public class Position2dRenderer extends ShapeRenderer {
         }
         for (RobotId id : robots) {
             RobotState r = in.world().robot(id);
-            RobotShapes.trail(r, trail.vertices());
+            RobotShapes.trail(r, 2 * in.camera().metresPerPixel(), trail.vertices());
             RobotShapes.footprint(r, body.vertices());
             RobotShapes.heading(r, heading.vertices());
             RobotShapes.velocity(r, velocity.vertices());

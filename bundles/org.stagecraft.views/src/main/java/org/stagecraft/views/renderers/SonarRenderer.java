@@ -42,16 +42,22 @@ public class SonarRenderer extends ShapeRenderer {
                 for (int i = 0; i < ranges.length; i++) {
                     ranges[i] = r.ranges().get(i);
                 }
-                cones(in.world(), dev, ranges, DEFAULT_APERTURE);
+                cones(in, dev, ranges, DEFAULT_APERTURE);
             } else if (b instanceof Ranger.Values v && "ranges".equals(v.name())) {
                 RangerConfig c = in.world().rangerConfig(dev);
                 double aperture = c.seen() && c.maxAngle() > c.minAngle() ? c.maxAngle() - c.minAngle() : DEFAULT_APERTURE;
-                cones(in.world(), dev, v.values().toArray(), aperture);
+                cones(in, dev, v.values().toArray(), aperture);
             }
         }
     }
 
-    private void cones(WorldModel world, DeviceAddress dev, double[] ranges, double aperture) {
+    @Override
+    protected boolean zoomDependent() {
+        return true;
+    }
+
+    private void cones(RenderInput in, DeviceAddress dev, double[] ranges, double aperture) {
+        WorldModel world = in.world();
         Mount mount = world.mount(dev);
         List<Pose2> elements = mount.elements();
         if (elements.size() != ranges.length || ranges.length < 2) {
@@ -59,7 +65,9 @@ public class SonarRenderer extends ShapeRenderer {
         }
         Pose2 device = world.devicePose(dev);
         for (int i = 0; i < ranges.length; i++) {
-            SensorShapes.cone(device.compose(elements.get(i)), ranges[i], aperture, SEGMENTS, cones.vertices());
+            // fewer slices when a cone is only a few pixels across: same picture, fewer triangles
+            int segments = SensorShapes.coneSegments(ranges[i], aperture, in.camera().metresPerPixel(), SEGMENTS);
+            SensorShapes.cone(device.compose(elements.get(i)), ranges[i], aperture, segments, cones.vertices());
         }
     }
 

@@ -23,6 +23,8 @@ final class GlHarness implements AutoCloseable {
     private final GLCanvas canvas;
     private RobotScene scene;
     private FramePixels last;
+    private boolean readBack = true;
+    private long drawn;
 
     GlHarness(int width, int height) {
         Display display = Display.getDefault();
@@ -39,7 +41,10 @@ final class GlHarness implements AutoCloseable {
             public void display(GLAutoDrawable d) {
                 if (scene != null) {
                     scene.render(d.getGL().getGL2(), d.getSurfaceWidth(), d.getSurfaceHeight());
-                    last = FramePixels.read(d.getGL(), d.getSurfaceWidth(), d.getSurfaceHeight());
+                    drawn++;
+                    if (readBack) {
+                        last = FramePixels.read(d.getGL(), d.getSurfaceWidth(), d.getSurfaceHeight());
+                    }
                 }
             }
 
@@ -63,11 +68,23 @@ final class GlHarness implements AutoCloseable {
     FramePixels frame(RobotScene s) {
         scene = s;
         last = null;
+        readBack = true;
         canvas.display();
         if (last == null) {
             throw new AssertionError("the canvas did not draw (no GL context?)");
         }
         return last;
+    }
+
+    /** Renders and swaps without reading back (the benchmark: as the view draws). */
+    void frame(RobotScene s, boolean read) {
+        scene = s;
+        readBack = read;
+        long before = drawn;
+        canvas.display();
+        if (drawn == before) {
+            throw new AssertionError("the canvas did not draw");
+        }
     }
 
     static void spinUntil(BooleanSupplier condition, long timeoutMillis, String what) {
