@@ -58,11 +58,21 @@ public final class RobotScene implements AutoCloseable {
         return camera;
     }
 
-    /** Starts (or moves) the scene's subscriptions to {@code newBus}. */
+    /** Starts (or moves) the scene's subscriptions to {@code newBus}, its world model fed by the scene itself. */
     public synchronized void connect(StreamBus newBus) {
+        connect(newBus, true);
+    }
+
+    /**
+     * As {@link #connect(StreamBus)}; with {@code feedWorld} false only the layers subscribe, for a scene
+     * whose world model is fed by someone else (a {@link org.stagecraft.scene.SharedWorld}).
+     */
+    public synchronized void connect(StreamBus newBus, boolean feedWorld) {
         disconnect();
         bus = newBus;
-        sceneFeed = new SceneFeed(bus, world, onChange);
+        if (feedWorld) {
+            sceneFeed = new SceneFeed(bus, world, onChange);
+        }
         for (LayerSpec l : layers.inDrawOrder()) {
             feeds.get(l.id()).subscribe(bus, l.pattern(), renderers.get(l.id()).deliveryPolicy());
         }

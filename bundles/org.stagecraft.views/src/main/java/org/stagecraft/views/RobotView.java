@@ -28,8 +28,7 @@ import org.stagecraft.scene.LayerSpec;
 import org.stagecraft.scene.RobotId;
 import org.stagecraft.scene.RobotState;
 import org.stagecraft.scene.ViewSetup;
-import org.stagecraft.scene.WorldModel;
-import org.stagecraft.streams.StreamBus;
+import org.stagecraft.scene.SharedWorld;
 import org.stagecraft.views.internal.RedrawThrottle;
 import org.stagecraft.views.internal.ViewMemento;
 
@@ -40,7 +39,8 @@ import com.jogamp.opengl.swt.GLCanvas;
 
 /**
  * The Robot View: one OpenGL canvas showing the robots of the workbench's stream bus in the world frame,
- * through layers (a renderer bound to a stream pattern each). Any number can be open (secondary ids);
+ * through layers (a renderer bound to a stream pattern each). All views share the bus's world model
+ * ({@link SharedWorld}), so a view opened late still knows the sensor geometry seen before. Any number can be open (secondary ids);
  * each keeps its layers and camera in its memento across workbench restarts.
  *
  * <p>Mouse: drag to pan, wheel to zoom at the pointer, double-click a robot to follow it (elsewhere: stop
@@ -54,12 +54,16 @@ public class RobotView extends ViewPart {
     private static final ILog LOG = ILog.of(Platform.getBundle("org.stagecraft.views"));
 
     private ViewSetup restored;
+    private SharedWorld shared;
+    private AutoCloseable worldListener;
     private RobotScene scene;
     private GLCanvas canvas;
     private RedrawThrottle redraw;
     private Consumer<FramePixels> readback;
     private int dragX, dragY;
     private boolean dragging;
+    /** A new view (no saved camera) follows the first robot it sees, wherever in the world it is. */
+    private boolean followFirstRobot;
 
     @Override
     public void init(IViewSite site, IMemento memento) throws PartInitException {
@@ -73,17 +77,15 @@ public class RobotView extends ViewPart {
     public void createPartControl(Composite parent) {
         canvas = GlSurfaces.create(parent);
         redraw = new RedrawThrottle(parent.getDisplay(), 1000 / MAX_FPS, this::drawNow);
-        scene = new RobotScene(new WorldModel(), new Camera(), redraw::request);
+        shared = SharedWorld.of(WorkbenchBus.get());
+        scene = new RobotScene(shared.world(), new Camera(), redraw::request);
+        worldListener = shared.listen(redraw::request);
         applySetup(restored != null ? restored : new ViewSetup(DefaultLayers.create(), Map.of()));
+        followFirstRobot = restored == null;
         canvas.addGLEventListener(new Drawer());
         installMouse();
         installMenu();
-        connect(WorkbenchBus.get());
-    }
-
-    /** Subscribes the view's layers to {@code bus} (the workbench bus unless a test says otherwise). */
-    public void connect(StreamBus bus) {
-        scene.connect(bus);
+        scene.connect(WorkbenchBus.get(), false); // the world model is the bus's shared one
         redraw.request();
     }
 
@@ -152,10 +154,23 @@ public class RobotView extends ViewPart {
         if (scene != null) {
             scene.close();
         }
+        if (worldListener != null) {
+            try {
+                worldListener.close();
+            } catch (Exception e) {
+                LOG.error("Robot View: " + e.getMessage(), e);
+            }
+        }
         super.dispose(); // the canvas goes with the part; its GLEventListener.dispose frees GPU data
     }
 
     private void drawNow() {
+        if (followFirstRobot) {
+            scene.world().robots().stream().filter(RobotState::poseSeen).findFirst().ifPresent(r -> {
+                followFirstRobot = false;
+                scene.camera().follow(r.id());
+            });
+        }
         if (canvas != null && !canvas.isDisposed() && canvas.isVisible()) {
             canvas.display();
         }
@@ -192,6 +207,7 @@ public class RobotView extends ViewPart {
     private void installMouse() {
         canvas.addListener(SWT.MouseDown, e -> {
             if (e.button == 1) {
+                followFirstRobot = false; // the user has taken the camera
                 dragging = true;
                 dragX = e.x;
                 dragY = e.y;
@@ -300,7 +316,7 @@ public class RobotView extends ViewPart {
     }
 
     private void centreOnRobots() {
-        List<RobotState> robots = scene.world().robots();
+        List<RobotState> robots = scene.world().robots().stream().filter(RobotState::poseSeen).toList();
         if (robots.isEmpty()) {
             scene.camera().centreOn(0, 0);
         } else {

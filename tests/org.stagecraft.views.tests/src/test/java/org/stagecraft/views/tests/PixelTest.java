@@ -185,6 +185,31 @@ class PixelTest {
         assertTrue(dbl >= 5 && single >= 5, "probes over cones " + dbl + ", over background " + single);
     }
 
+    @Test
+    void theRobotIsDrawnAtItsPoseWithItsFootprintAndHeading() {
+        rec.layer(new LayerSpec("robots", DefaultLayers.POSITION2D, "Robots", StreamPattern.parse("type=1 dev=4 subtype=1"),
+                true, 0xE61A1A, 1.0, 30), new org.stagecraft.views.renderers.Position2dRenderer(),
+                new org.stagecraft.streams.StreamMessage(new org.stagecraft.streams.StreamKey(RecordedScene.PLAYER,
+                        "127.0.0.1:40001", 1, 4, 0, 1), 0, new Object()));
+        rec.hideAll();
+        rec.show("robots", true);
+        rec.camera.setMetresPerPixel(0.004); // the 44 x 38 cm Pioneer is 110 x 95 px
+        FramePixels f = gl.frame(rec.scene);
+        RobotId robot = new RobotId(RecordedScene.PLAYER);
+        Pose2 body = rec.world.robot(robot).pose().compose(rec.world.robot(robot).body().pose());
+        int heading = 0x670B0B; // #E61A1A at shade 0.45
+        // in the body frame: the heading marker points forward (+x), the footprint is 0.44 x 0.38 m
+        assertColour(heading, probe(f, body, 0.12, 0), 3, "ahead of the centre: heading marker");
+        assertColour(0xE61A1A, probe(f, body, -0.15, 0), 3, "behind the centre: footprint");
+        assertColour(0xE61A1A, probe(f, body, 0.18, 0.15), 3, "front left corner: footprint");
+        assertTrue(!FramePixels.close(0xE61A1A, probe(f, body, 0.26, 0), 40), "beyond the front: no footprint");
+        assertTrue(!FramePixels.close(0xE61A1A, probe(f, body, 0, 0.23), 40), "beyond the side: no footprint");
+    }
+
+    private int probe(FramePixels f, Pose2 frame, double x, double y) {
+        return f.rgb(rec.camera.pixelColumn(frame.toParentX(x, y)), rec.camera.pixelRow(frame.toParentY(x, y)));
+    }
+
     /** Checks every 3rd pixel: inside exactly one cone it is the blend, outside all it is the background. */
     private int[] checkCones(FramePixels f, FramePixels base, double alpha) {
         Camera c = rec.camera;

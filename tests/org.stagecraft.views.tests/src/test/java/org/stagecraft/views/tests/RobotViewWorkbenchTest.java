@@ -151,6 +151,11 @@ class RobotViewWorkbenchTest {
             assertEquals(16, v.scene().world().mount(new org.stagecraft.scene.DeviceAddress(robot, 62, 0)).elements().size(),
                     "the sonar geometry came off the wire");
         }
+        // a view opened after the session knows its sensors: the geometry replies came long before it
+        RobotView late = show("late");
+        assertTrue(late.scene().world().robot(robot).poseSeen());
+        assertEquals(16, late.scene().world().mount(new org.stagecraft.scene.DeviceAddress(robot, 62, 0)).elements().size());
+        page.hideView(late);
         page.hideView(b);
     }
 
