@@ -1,6 +1,9 @@
 package org.stagecraft.core.streams;
 
+import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamPattern;
+import org.stagecraft.streams.Subscription;
 
 /**
  * The stream bus of the running workbench: whatever observes a robot (the Network Spy of a Robot Session,
@@ -11,6 +14,19 @@ public final class WorkbenchBus {
     private static StreamBus bus;
 
     private WorkbenchBus() {
+    }
+
+    /** How many messages of a forwarded bus may wait for the workbench bus before some are dropped (and counted). */
+    public static final int FORWARD_CAPACITY = 1 << 16;
+
+    /**
+     * Republishes everything {@code source} carries (e.g. a Robot Session's own bus, fed by its spy) on the
+     * workbench bus, in order and lossless up to {@value #FORWARD_CAPACITY} waiting messages, so that the
+     * views see it. Close the result to stop.
+     */
+    public static Subscription forward(StreamBus source) {
+        StreamBus target = get();
+        return source.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(FORWARD_CAPACITY), target::publish);
     }
 
     public static synchronized StreamBus get() {

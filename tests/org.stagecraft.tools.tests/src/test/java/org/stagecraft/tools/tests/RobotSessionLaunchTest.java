@@ -19,6 +19,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -47,6 +48,10 @@ import org.eclipse.ui.console.TextConsole;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.stagecraft.core.streams.WorkbenchBus;
+import org.stagecraft.streams.DeliveryPolicy;
+import org.stagecraft.streams.StreamPattern;
+import org.stagecraft.streams.Subscription;
 import org.junit.jupiter.api.Timeout;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.recording.peer.RecordedConnection;
@@ -166,6 +171,11 @@ class RobotSessionLaunchTest {
         wc.setAttribute(ILaunchManager.ATTR_ENVIRONMENT_VARIABLES, Map.of("ROBOT_PORT", String.valueOf(port)));
         RecordedConnection recorded = RecordedConnection.read(Fixtures.traces().resolve(TRACE)).get(0);
 
+        // the views listen on the workbench bus: the session's messages must reach it
+        CountDownLatch poseOnWorkbenchBus = new CountDownLatch(1);
+        Subscription workbench = WorkbenchBus.get().subscribe(StreamPattern.parse("src=*:" + port + " type=1 dev=4 subtype=1"),
+                DeliveryPolicy.latestValue(), m -> poseOnWorkbenchBus.countDown());
+
         ILaunch launch = launch(wc);
         SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
         assertNotNull(parts, "the session runs when launch returns");
@@ -207,6 +217,8 @@ class RobotSessionLaunchTest {
         ReplayPeer.Result r = client.get(60, TimeUnit.SECONDS);
         assertTrue(r.matches(), "the client got Player's recorded bytes; first difference at " + r.firstDifference());
         awaitConsole(playerPart, "served port=" + moved + " bytes_in=" + recorded.clientBytes().length + " match=true");
+        assertTrue(poseOnWorkbenchBus.await(30, TimeUnit.SECONDS), "position2d data of the session on the workbench bus");
+        workbench.close();
 
         // the Tools view shows the parts and their states
         AtomicReference<List<String>> shown = new AtomicReference<>();

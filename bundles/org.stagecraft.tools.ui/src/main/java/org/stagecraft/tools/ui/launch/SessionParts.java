@@ -11,7 +11,9 @@ import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.debug.core.DebugException;
 import org.eclipse.debug.core.ILaunch;
+import org.stagecraft.core.streams.WorkbenchBus;
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.streams.Subscription;
 import org.stagecraft.tools.process.SupervisedTool;
 import org.stagecraft.tools.process.ToolListener;
 import org.stagecraft.tools.process.ToolState;
@@ -37,6 +39,8 @@ public final class SessionParts implements ToolListener {
     private boolean stopping;
     /** Stops the session if the IDE exits while it runs (else Player would outlive the IDE and keep its ports). */
     private Thread exitHook;
+    /** The session's bus republished on the workbench bus, where the Robot Views listen. */
+    private volatile Subscription toWorkbench;
 
     public SessionParts(ILaunch launch, String sessionName) {
         this.launch = launch;
@@ -59,6 +63,7 @@ public final class SessionParts implements ToolListener {
     /** Called once the session runs: shows the spy as a part of its own. */
     public void started(RobotSession s) {
         this.session = s;
+        toWorkbench = WorkbenchBus.forward(s.bus());
         exitHook = new Thread(s::close, "stagecraft-session-exit-" + sessionName);
         Runtime.getRuntime().addShutdownHook(exitHook);
         SessionPartProcess p;
@@ -172,6 +177,10 @@ public final class SessionParts implements ToolListener {
         RobotSession s = session;
         if (s != null) {
             s.close();
+            Subscription forwarding = toWorkbench;
+            if (forwarding != null) {
+                forwarding.close();
+            }
             try {
                 Runtime.getRuntime().removeShutdownHook(exitHook);
             } catch (IllegalStateException e) {
