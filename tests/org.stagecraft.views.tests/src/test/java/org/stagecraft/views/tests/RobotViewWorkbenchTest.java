@@ -124,12 +124,14 @@ class RobotViewWorkbenchTest {
         return v;
     }
 
-    /** Waits until the view has the robot and its laser, follows the robot, and draws a frame. */
-    private FramePixels drawnWithData(RobotView v, RobotId robot) {
+    /**
+     * Waits until the view has the robot and its laser and has redrawn by itself since {@code framesBefore}
+     * (counted before the data was sent), then follows the robot and draws a frame.
+     */
+    private FramePixels drawnWithData(RobotView v, RobotId robot, long framesBefore) {
         GlHarness.spinUntil(() -> v.scene().world().robot(robot).poseSeen() && !v.scene().feed("laser").snapshot().isEmpty(),
                 30_000, "the view to receive pose and laser data");
-        long before = v.frames();
-        GlHarness.spinUntil(() -> v.frames() > before, 10_000, "the view to redraw by itself after the data");
+        GlHarness.spinUntil(() -> v.frames() > framesBefore, 10_000, "the view to redraw by itself after the data");
         v.scene().camera().follow(robot);
         return v.capture();
     }
@@ -140,11 +142,13 @@ class RobotViewWorkbenchTest {
         RobotView a = show(null); // the perspective's Robot View
         RobotView b = show("second");
         assertNotEquals(a, b);
+        GlHarness.spinUntil(() -> a.frames() > 0 && b.frames() > 0, 10_000, "both views to draw their first frame");
+        long framesA = a.frames(), framesB = b.frames();
         String playerAddress = replayThroughTheSpy();
         RobotId robot = new RobotId(playerAddress);
 
         for (RobotView v : List.of(a, b)) {
-            FramePixels f = drawnWithData(v, robot);
+            FramePixels f = drawnWithData(v, robot, v == a ? framesA : framesB);
             assertTrue(f.width() > 50 && f.height() > 50, "the view is on screen: " + f.width() + " x " + f.height());
             assertTrue(f.count(LASER_HIT, 2) >= 10, v.getViewSite().getSecondaryId() + ": laser hits drawn: " + f.count(LASER_HIT, 2));
             assertTrue(f.count(ROBOT_HEADING, 3) >= 5, "robot drawn: " + f.count(ROBOT_HEADING, 3));
@@ -188,9 +192,11 @@ class RobotViewWorkbenchTest {
         assertEquals("laser", read.layers().get(read.layers().size() - 1).id(), "drawn last");
 
         // and it draws with the restored setup: green laser hits, no blue ones, no sonar cones
+        GlHarness.spinUntil(() -> restarted.frames() > 0, 10_000, "the reopened view to draw its first frame");
+        long framesBefore = restarted.frames();
         RobotId robot = new RobotId(replayThroughTheSpy());
         restarted.scene().camera().follow(null);
-        FramePixels f = drawnWithData(restarted, robot);
+        FramePixels f = drawnWithData(restarted, robot, framesBefore);
         assertTrue(f.count(0x00AA00, 2) >= 10, "restored laser colour drawn: " + f.count(0x00AA00, 2));
         assertEquals(0, f.count(LASER_HIT, 2), "no pixel in the old laser colour");
         page.hideView(restarted);
