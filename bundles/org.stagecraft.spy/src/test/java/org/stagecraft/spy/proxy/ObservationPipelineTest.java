@@ -106,6 +106,20 @@ class ObservationPipelineTest {
         return up;
     }
 
+    private ObservationPipeline pipeline(StreamBus bus, SpyRecorder recorder, long maxQueuedBytes) {
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, recorder, maxQueuedBytes);
+        cleanup.add(pipeline);
+        return pipeline;
+    }
+
+    /** A started spy relaying to {@code player} and observing with {@code pipeline}. */
+    private NetworkSpy spyInFrontOf(ServerSocket player, ObservationPipeline pipeline) throws IOException {
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
+        cleanup.add(spy);
+        spy.start();
+        return spy;
+    }
+
     /** A robot program replaying the recorded client stream; returns what it received. */
     private static byte[] robotProgram(NetworkSpy spy, byte[] c2s) throws IOException {
         try (Socket s = new Socket()) {
@@ -142,13 +156,9 @@ class ObservationPipelineTest {
             }
         });
         RecordingRecorder recorder = new RecordingRecorder();
-        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, recorder, 64 << 20);
-        cleanup.add(pipeline);
+        ObservationPipeline pipeline = pipeline(bus, recorder, 64 << 20);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        ServerSocket player = fakePlayer(rec[1], playerGot);
-        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
-        cleanup.add(spy);
-        spy.start();
+        NetworkSpy spy = spyInFrontOf(fakePlayer(rec[1], playerGot), pipeline);
 
         byte[] robotGot = robotProgram(spy, rec[0]);
         assertArrayEquals(rec[1], robotGot, "the robot program saw exactly what Player sent");
@@ -191,13 +201,9 @@ class ObservationPipelineTest {
         Subscription lossless = bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(100), blockForever);
         Subscription latest = bus.subscribe(StreamPattern.any(), DeliveryPolicy.latestValue(), blockForever);
         RecordingRecorder recorder = new RecordingRecorder();
-        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, recorder, 64 << 20);
-        cleanup.add(pipeline);
+        ObservationPipeline pipeline = pipeline(bus, recorder, 64 << 20);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        ServerSocket player = fakePlayer(rec[1], playerGot);
-        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
-        cleanup.add(spy);
-        spy.start();
+        NetworkSpy spy = spyInFrontOf(fakePlayer(rec[1], playerGot), pipeline);
 
         assertArrayEquals(rec[1], robotProgram(spy, rec[0]));
         assertArrayEquals(rec[0], playerGot.get(20, TimeUnit.SECONDS));
@@ -237,13 +243,9 @@ class ObservationPipelineTest {
                 super.wire(c, dir, e, t);
             }
         };
-        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, stuck, 256 * 1024);
-        cleanup.add(pipeline);
+        ObservationPipeline pipeline = pipeline(bus, stuck, 256 * 1024);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        ServerSocket player = fakePlayer(rec[1], playerGot);
-        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
-        cleanup.add(spy);
-        spy.start();
+        NetworkSpy spy = spyInFrontOf(fakePlayer(rec[1], playerGot), pipeline);
 
         byte[] robotGot = robotProgram(spy, rec[0]); // completes although observation is stuck
         assertArrayEquals(rec[1], robotGot);
@@ -276,13 +278,9 @@ class ObservationPipelineTest {
                 super.wire(c, dir, e, t);
             }
         };
-        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, full, 64 << 20);
-        cleanup.add(pipeline);
+        ObservationPipeline pipeline = pipeline(bus, full, 64 << 20);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        ServerSocket player = fakePlayer(rec[1], playerGot);
-        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
-        cleanup.add(spy);
-        spy.start();
+        NetworkSpy spy = spyInFrontOf(fakePlayer(rec[1], playerGot), pipeline);
         assertArrayEquals(rec[1], robotProgram(spy, rec[0]));
         assertArrayEquals(rec[0], playerGot.get(20, TimeUnit.SECONDS));
         assertTrue(all.await(20, TimeUnit.SECONDS), "every message is still published");
