@@ -17,6 +17,7 @@ import org.eclipse.debug.core.ILaunchConfigurationType;
 import org.eclipse.debug.core.ILaunchConfigurationWorkingCopy;
 import org.eclipse.debug.core.ILaunchManager;
 import org.osgi.service.prefs.BackingStoreException;
+import org.stagecraft.demo.PlayerChoice;
 import org.stagecraft.tools.session.SessionConfig;
 import org.stagecraft.tools.types.ToolDefinition;
 import org.stagecraft.tools.ui.launch.LaunchAttributes;

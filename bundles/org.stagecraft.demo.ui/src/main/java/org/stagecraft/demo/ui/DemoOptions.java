@@ -2,6 +2,8 @@ package org.stagecraft.demo.ui;
 
 import java.nio.file.Path;
 
+import org.stagecraft.demo.PlayerChoice;
+
 /**
  * What {@code ./stagecraft demo} asked for, passed as system properties (the product is started with
  * {@code java -jar}, and a property reaches an early-startup class without parsing the application's
@@ -16,7 +18,6 @@ import java.nio.file.Path;
  */
 record DemoOptions(boolean enabled, Path status, int exitAfterSeconds, String player, Path recording) {
     static final String PREFIX = "stagecraft.demo";
-    static final String AUTO = "auto", RECORDED = "recorded";
 
     static DemoOptions fromSystemProperties() {
         boolean enabled = Boolean.parseBoolean(System.getProperty(PREFIX, "false"));
@@ -30,6 +31,6 @@ record DemoOptions(boolean enabled, Path status, int exitAfterSeconds, String pl
             exitAfter = 0;
         }
         return new DemoOptions(enabled, status.isBlank() ? null : Path.of(status), exitAfter,
-                player.isBlank() ? AUTO : player.trim(), recording.isBlank() ? null : Path.of(recording));
+                player.isBlank() ? PlayerChoice.AUTO : player.trim(), recording.isBlank() ? null : Path.of(recording));
     }
 }

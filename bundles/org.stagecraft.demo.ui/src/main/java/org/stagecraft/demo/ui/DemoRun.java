@@ -21,9 +21,11 @@ import org.eclipse.swt.widgets.Display;
 import org.eclipse.ui.IWorkbenchWindow;
 import org.eclipse.ui.PlatformUI;
 import org.osgi.framework.FrameworkUtil;
+import org.stagecraft.demo.PlayerChoice;
 import org.stagecraft.demo.recorded.RecordingException;
 import org.stagecraft.demo.recorded.TimedConnection;
 import org.stagecraft.demo.recorded.TimedRecording;
+import org.stagecraft.tools.session.RobotSession;
 import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
 import org.stagecraft.tools.ui.launch.SessionParts;
 import org.stagecraft.views.RobotView;
@@ -43,6 +45,7 @@ final class DemoRun {
     private volatile List<RobotView> views = List.of();
     private volatile Path spyLog;
     private volatile boolean failed;
+    private final PartReports reports = new PartReports();
 
     DemoRun(DemoOptions options, Display display) {
         this.options = options;
@@ -70,12 +73,14 @@ final class DemoRun {
             TimedRecording rec = TimedRecording.read(recording);
             DemoLog.info(String.format(Locale.ROOT, "recording %s: %d connection(s), %.1f s", recording,
                     rec.connections().size(), rec.connections().stream().mapToDouble(TimedConnection::length).max().orElse(0)));
-            PlayerChoice player = PlayerChoice.choose(options.player(), RecordedPrograms.writePlayerLauncher(stateLocation()));
+            PlayerChoice player = PlayerChoice.choose(options.player(), RecordedPrograms.writePlayerLauncher(stateLocation()),
+                    System.getenv("PATH"));
             status.put("player", player.program());
             status.put("recordedPlayer", player.recorded());
             DemoLog.info(player.recorded() ? "Player: the recorded Player (" + player.program() + ")"
                     : "Player: " + player.program() + " (a real Player/Stage)");
             ILaunchConfiguration config = DemoLaunch.configure(project, player, recording);
+            DemoEditors.keepConsolesBehind();
 
             display.syncExec(this::openViews);
             status.put("phase", "launching");
@@ -85,6 +90,7 @@ final class DemoRun {
                 fail("the Robot Session '" + config.getName() + "' ended as soon as it started", null);
                 return Status.OK_STATUS;
             }
+            reports.listen(parts, RecordedPrograms.ROBOT_TOOL, RobotSession.PLAYER_TOOL_NAME);
             spyLog = parts.session().config().log();
             status.put("spyLog", spyLog == null ? null : spyLog.toString());
             status.put("phase", "running");
@@ -92,10 +98,9 @@ final class DemoRun {
             IFolder logs = project.getFolder(DemoProject.LOG_FOLDER);
             logs.refreshLocal(IResource.DEPTH_ONE, monitor);
             IFile logFile = spyLog == null ? null : logs.getFile(spyLog.getFileName().toString());
+            IFile cfgFile = project.getFile(DemoProject.CFG);
             display.asyncExec(() -> {
-                if (logFile != null) {
-                    status.put("sessionLogEditor", SessionLogOpener.open(window().getActivePage(), logFile));
-                }
+                status.put("sessionLogEditor", DemoEditors.open(window().getActivePage(), cfgFile, logFile));
                 sampleEverySecond();
             });
         } catch (RecordingException e) {
@@ -120,6 +125,7 @@ final class DemoRun {
         if (display.isDisposed() || PlatformUI.getWorkbench().isClosing()) {
             return;
         }
+        status.put("reports", reports.lines());
         status.sample(views, spyLog);
         display.timerExec(SAMPLE_MILLIS, this::sampleEverySecond);
     }
@@ -141,6 +147,7 @@ final class DemoRun {
             return;
         }
         if (!failed) {
+            status.put("reports", reports.lines());
             status.finish(views, spyLog);
         }
         DemoLog.info("closing the workbench after " + options.exitAfterSeconds() + " s (--exit-after)");

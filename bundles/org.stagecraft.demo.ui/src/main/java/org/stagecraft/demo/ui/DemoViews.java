@@ -3,6 +3,8 @@ package org.stagecraft.demo.ui;
 import java.util.List;
 import java.util.Map;
 
+import org.eclipse.ui.IPageLayout;
+import org.eclipse.ui.IViewPart;
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.IWorkbenchWindow;
 import org.eclipse.ui.PartInitException;
@@ -28,8 +30,15 @@ final class DemoViews {
     }
 
     static List<RobotView> open(IWorkbenchWindow window) throws PartInitException, WorkbenchException {
+        // the views are the demo: give them the screen (bounds too, for a display without a window manager)
+        window.getShell().setBounds(window.getShell().getDisplay().getPrimaryMonitor().getClientArea());
+        window.getShell().setMaximized(true);
         PlatformUI.getWorkbench().showPerspective(PERSPECTIVE, window);
         IWorkbenchPage page = window.getActivePage();
+        IViewPart outline = page.findView(IPageLayout.ID_OUTLINE);
+        if (outline != null) {
+            page.hideView(outline); // nothing to outline here; the Debug view below it shows the session
+        }
         page.showView(ToolsView.ID, null, IWorkbenchPage.VIEW_VISIBLE);
         RobotView near = (RobotView) page.showView(RobotView.ID);
         RobotView overview = (RobotView) page.showView(RobotView.ID, OVERVIEW, IWorkbenchPage.VIEW_VISIBLE);
