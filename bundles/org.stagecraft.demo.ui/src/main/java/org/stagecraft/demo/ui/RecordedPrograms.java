@@ -85,8 +85,8 @@ final class RecordedPrograms {
         return "'" + s.replace("'", "'\\''") + "'";
     }
 
-    /** Double quotes for the tool manager's shell-like argument splitting. */
+    /** Double quotes for the tool manager's shell-like argument splitting (a backslash escapes there). */
     private static String quoteForSplit(String s) {
-        return "\"" + s.replace("\"", "\\\"") + "\"";
+        return "\"" + s.replace("\\", "\\\\").replace("\"", "\\\"") + "\"";
     }
 }
