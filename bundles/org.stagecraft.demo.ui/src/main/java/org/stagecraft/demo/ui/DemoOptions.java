@@ -1,0 +1,36 @@
+package org.stagecraft.demo.ui;
+
+import java.nio.file.Path;
+
+import org.stagecraft.demo.PlayerChoice;
+
+/**
+ * What {@code ./stagecraft demo} asked for, passed as system properties (the product is started with
+ * {@code java -jar}, and a property reaches an early-startup class without parsing the application's
+ * arguments).
+ *
+ * @param enabled          the product was started as the demo
+ * @param status           where to write the demo's status (JSON), or null
+ * @param exitAfterSeconds close the workbench this long after the start (0: stay open)
+ * @param player           "auto" (a real {@code player} on PATH if there is one, else the recording),
+ *                         "recorded", or the path of a Player program
+ * @param recording        a recording to use instead of the shipped one, or null
+ */
+record DemoOptions(boolean enabled, Path status, int exitAfterSeconds, String player, Path recording) {
+    static final String PREFIX = "stagecraft.demo";
+
+    static DemoOptions fromSystemProperties() {
+        boolean enabled = Boolean.parseBoolean(System.getProperty(PREFIX, "false"));
+        String status = System.getProperty(PREFIX + ".status", "");
+        String player = System.getProperty(PREFIX + ".player", "");
+        String recording = System.getProperty(PREFIX + ".recording", "");
+        int exitAfter;
+        try {
+            exitAfter = Math.max(0, Integer.parseInt(System.getProperty(PREFIX + ".exitAfter", "0").trim()));
+        } catch (NumberFormatException e) {
+            exitAfter = 0;
+        }
+        return new DemoOptions(enabled, status.isBlank() ? null : Path.of(status), exitAfter,
+                player.isBlank() ? PlayerChoice.AUTO : player.trim(), recording.isBlank() ? null : Path.of(recording));
+    }
+}

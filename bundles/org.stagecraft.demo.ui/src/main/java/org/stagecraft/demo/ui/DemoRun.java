@@ -1,0 +1,165 @@
+package org.stagecraft.demo.ui;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IFolder;
+import org.eclipse.core.resources.IProject;
+import org.eclipse.core.resources.IResource;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.core.runtime.IProgressMonitor;
+import org.eclipse.core.runtime.IStatus;
+import org.eclipse.core.runtime.Platform;
+import org.eclipse.core.runtime.Status;
+import org.eclipse.core.runtime.jobs.Job;
+import org.eclipse.debug.core.ILaunch;
+import org.eclipse.debug.core.ILaunchConfiguration;
+import org.eclipse.jface.dialogs.MessageDialog;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.ui.IWorkbenchWindow;
+import org.eclipse.ui.PlatformUI;
+import org.osgi.framework.FrameworkUtil;
+import org.stagecraft.demo.PlayerChoice;
+import org.stagecraft.demo.recorded.RecordingException;
+import org.stagecraft.demo.recorded.TimedConnection;
+import org.stagecraft.demo.recorded.TimedRecording;
+import org.stagecraft.tools.session.RobotSession;
+import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
+import org.stagecraft.tools.ui.launch.SessionParts;
+import org.stagecraft.views.RobotView;
+
+/**
+ * One run of the demo: the project, the launch configuration, the views, the launch, the Session
+ * Log, then status samples until the workbench closes (by the user, or after {@code exitAfter}).
+ * Preparing and launching run in a job (they wait for files and processes); everything that touches
+ * widgets runs on the UI thread.
+ */
+final class DemoRun {
+    private static final int SAMPLE_MILLIS = 1000;
+
+    private final DemoOptions options;
+    private final Display display;
+    private final DemoStatus status;
+    private volatile List<RobotView> views = List.of();
+    private volatile Path spyLog;
+    private volatile boolean failed;
+    private final PartReports reports = new PartReports();
+
+    DemoRun(DemoOptions options, Display display) {
+        this.options = options;
+        this.display = display;
+        Path file = options.status() != null ? options.status() : stateLocation().resolve("status.json");
+        this.status = new DemoStatus(file);
+        DemoLog.info("status in " + file);
+    }
+
+    void start() {
+        if (options.exitAfterSeconds() > 0) {
+            display.asyncExec(() -> display.timerExec(options.exitAfterSeconds() * 1000, this::finishAndExit));
+        }
+        Job job = Job.create("Starting the Stagecraft demo", this::prepareAndLaunch);
+        job.schedule();
+    }
+
+    private IStatus prepareAndLaunch(IProgressMonitor monitor) {
+        try {
+            status.put("phase", "preparing");
+            IProject project = DemoProject.install(monitor);
+            status.put("project", project.getLocation().toString());
+            Path recording = options.recording() != null ? options.recording()
+                    : project.getFile(DemoProject.RECORDING).getLocation().toPath();
+            TimedRecording rec = TimedRecording.read(recording);
+            DemoLog.info(String.format(Locale.ROOT, "recording %s: %d connection(s), %.1f s", recording,
+                    rec.connections().size(), rec.connections().stream().mapToDouble(TimedConnection::length).max().orElse(0)));
+            PlayerChoice player = PlayerChoice.choose(options.player(), RecordedPrograms.writePlayerLauncher(stateLocation()),
+                    System.getenv("PATH"));
+            status.put("player", player.program());
+            status.put("recordedPlayer", player.recorded());
+            DemoLog.info(player.recorded() ? "Player: the recorded Player (" + player.program() + ")"
+                    : "Player: " + player.program() + " (a real Player/Stage)");
+            ILaunchConfiguration config = DemoLaunch.configure(project, player, recording);
+            DemoEditors.keepConsolesBehind();
+
+            display.syncExec(this::openViews);
+            status.put("phase", "launching");
+            ILaunch launch = DemoLaunch.launch(config, monitor);
+            SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
+            if (parts == null || parts.session() == null) {
+                fail("the Robot Session '" + config.getName() + "' ended as soon as it started", null);
+                return Status.OK_STATUS;
+            }
+            reports.listen(parts, RecordedPrograms.ROBOT_TOOL, RobotSession.PLAYER_TOOL_NAME);
+            spyLog = parts.session().config().log();
+            status.put("spyLog", spyLog == null ? null : spyLog.toString());
+            status.put("phase", "running");
+            DemoLog.info("Robot Session '" + config.getName() + "' runs; spy log " + spyLog);
+            IFolder logs = project.getFolder(DemoProject.LOG_FOLDER);
+            logs.refreshLocal(IResource.DEPTH_ONE, monitor);
+            IFile logFile = spyLog == null ? null : logs.getFile(spyLog.getFileName().toString());
+            IFile cfgFile = project.getFile(DemoProject.CFG);
+            display.asyncExec(() -> {
+                status.put("sessionLogEditor", DemoEditors.open(window().getActivePage(), cfgFile, logFile));
+                sampleEverySecond();
+            });
+        } catch (RecordingException e) {
+            fail("the demo recording cannot be used: " + e.getMessage(), e);
+        } catch (CoreException e) {
+            fail(e.getStatus().getMessage(), e);
+        } catch (Exception e) {
+            fail(e.toString(), e);
+        }
+        return Status.OK_STATUS;
+    }
+
+    private void openViews() {
+        try {
+            views = DemoViews.open(window());
+        } catch (Exception e) {
+            DemoLog.error("cannot open the demo's views: " + e.getMessage(), e);
+        }
+    }
+
+    private void sampleEverySecond() {
+        if (display.isDisposed() || PlatformUI.getWorkbench().isClosing()) {
+            return;
+        }
+        status.put("reports", reports.lines());
+        status.sample(views, spyLog);
+        display.timerExec(SAMPLE_MILLIS, this::sampleEverySecond);
+    }
+
+    private void fail(String message, Throwable cause) {
+        failed = true;
+        DemoLog.error(message, cause);
+        status.put("error", message);
+        status.put("phase", "failed");
+        if (options.exitAfterSeconds() > 0) {
+            display.asyncExec(() -> PlatformUI.getWorkbench().close());
+        } else {
+            display.asyncExec(() -> MessageDialog.openError(window().getShell(), "Stagecraft demo", message));
+        }
+    }
+
+    private void finishAndExit() {
+        if (PlatformUI.getWorkbench().isClosing()) {
+            return;
+        }
+        if (!failed) {
+            status.put("reports", reports.lines());
+            status.finish(views, spyLog);
+        }
+        DemoLog.info("closing the workbench after " + options.exitAfterSeconds() + " s (--exit-after)");
+        PlatformUI.getWorkbench().close();
+    }
+
+    private static IWorkbenchWindow window() {
+        IWorkbenchWindow w = PlatformUI.getWorkbench().getActiveWorkbenchWindow();
+        return w != null ? w : PlatformUI.getWorkbench().getWorkbenchWindows()[0];
+    }
+
+    private static Path stateLocation() {
+        return Platform.getStateLocation(FrameworkUtil.getBundle(DemoRun.class)).toPath();
+    }
+}

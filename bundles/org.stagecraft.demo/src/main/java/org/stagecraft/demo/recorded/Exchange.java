@@ -1,0 +1,60 @@
+package org.stagecraft.demo.recorded;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.Socket;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+
+/**
+ * One side of a recorded connection played over a real socket at the recorded pace: each chunk is
+ * written when it was recorded, the side half-closes when the recorded connection ended, and
+ * meanwhile everything the other side sends is read (a peer that stops reading would stall the
+ * other's writes) and compared with the recording.
+ */
+final class Exchange {
+    private Exchange() {
+    }
+
+    static ExchangeResult play(Socket socket, List<TimedChunk> send, byte[] expected, double length, double speed)
+            throws IOException, InterruptedException {
+        try (socket; ExecutorService writer = Executors.newVirtualThreadPerTaskExecutor()) {
+            socket.setTcpNoDelay(true);
+            Pacer pacer = new Pacer(speed);
+            OutputStream out = socket.getOutputStream();
+            Future<Long> sending = writer.submit(() -> {
+                long sent = 0;
+                for (TimedChunk c : send) {
+                    pacer.awaitOffset(c.offset());
+                    out.write(c.data());
+                    sent += c.data().length;
+                }
+                pacer.awaitOffset(length);
+                socket.shutdownOutput();
+                return sent;
+            });
+            ByteMatcher matcher = new ByteMatcher(expected);
+            InputStream in = socket.getInputStream();
+            byte[] buffer = new byte[65536];
+            try {
+                for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
+                    matcher.accept(buffer, n);
+                }
+            } catch (IOException e) {
+                sending.cancel(true);
+                throw e;
+            }
+            long sent;
+            try {
+                sent = sending.get();
+            } catch (ExecutionException e) {
+                throw e.getCause() instanceof IOException io ? io : new IOException(e.getCause());
+            }
+            return new ExchangeResult(sent, matcher.received(), matcher.matchesWhole(), matcher.firstDifference());
+        }
+    }
+}

@@ -1,0 +1,119 @@
+package org.stagecraft.demo.recorded;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
+
+/**
+ * Stands in for Player with a recording: listens on Player's ports and serves every accepted
+ * connection the server side of a recorded connection (the banner, the replies and the data, each
+ * chunk at its recorded moment), whatever the client says. What the client sends is compared with
+ * what the recorded client sent, so a relay in between can be checked byte for byte.
+ *
+ * <p>Which recorded connection a client gets: the n-th connection accepted (over all ports) gets the
+ * recording's connection n modulo their number. A rewritten cfg moves Player's ports, so the
+ * recorded port numbers cannot be used to choose.
+ */
+public final class RecordedPlayer implements AutoCloseable {
+    /** One served connection, reported when it ended. */
+    public record Served(int port, int recordedConn, ExchangeResult result, String error) {
+        public String describe() {
+            return "served recorded connection " + recordedConn + " on port " + port + ": "
+                    + (error != null ? "ended early: " + error : result.describe("robot program"));
+        }
+    }
+
+    private final TimedRecording recording;
+    private final double speed;
+    private final Consumer<Served> report;
+    private final List<ServerSocket> servers = new ArrayList<>();
+    private final Set<Socket> open = ConcurrentHashMap.newKeySet();
+    private final AtomicInteger accepted = new AtomicInteger();
+    private final ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();
+
+    public RecordedPlayer(TimedRecording recording, double speed, Consumer<Served> report) {
+        this.recording = recording;
+        this.speed = speed;
+        this.report = report;
+    }
+
+    /** Binds every port on the loopback interface (all or none) and starts accepting. */
+    public synchronized void start(List<Integer> ports) throws IOException {
+        try {
+            for (int port : ports) {
+                ServerSocket s = new ServerSocket();
+                servers.add(s);
+                s.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 50);
+            }
+        } catch (IOException e) {
+            close();
+            throw new IOException("cannot listen on port " + ports.get(servers.size() - 1) + ": " + e.getMessage(), e);
+        }
+        for (ServerSocket s : servers) {
+            threads.submit(() -> acceptLoop(s));
+        }
+    }
+
+    /** The ports it listens on (useful with port 0). */
+    public synchronized List<Integer> ports() {
+        return servers.stream().map(ServerSocket::getLocalPort).toList();
+    }
+
+    private Void acceptLoop(ServerSocket server) {
+        while (!server.isClosed()) {
+            Socket client;
+            try {
+                client = server.accept();
+            } catch (IOException e) {
+                return null; // closed
+            }
+            open.add(client);
+            TimedConnection conn = recording.connections().get(accepted.getAndIncrement() % recording.connections().size());
+            threads.submit(() -> serve(client, server.getLocalPort(), conn));
+        }
+        return null;
+    }
+
+    private Void serve(Socket client, int port, TimedConnection conn) {
+        try {
+            ExchangeResult r = Exchange.play(client, conn.server(), conn.clientBytes(), conn.length(), speed);
+            report.accept(new Served(port, conn.conn(), r, null));
+        } catch (IOException e) {
+            report.accept(new Served(port, conn.conn(), null, e.getMessage()));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            open.remove(client);
+        }
+        return null;
+    }
+
+    @Override
+    public synchronized void close() {
+        for (ServerSocket s : servers) {
+            try {
+                s.close();
+            } catch (IOException e) {
+                // closing a listening socket only fails if it is already gone
+            }
+        }
+        for (Socket s : open) {
+            try {
+                s.close();
+            } catch (IOException e) {
+                // the connection is being dropped anyway
+            }
+        }
+        threads.shutdownNow();
+    }
+}
