@@ -239,7 +239,10 @@ public final class SpyLogReader implements AutoCloseable {
             int op = pre[0] & 0xff;
             long len = Mcap.readU64(pre, 1);
             if (len > size - pos - Mcap.RECORD_PREFIX || len > MAX_RECORD) {
-                return false; // cut off inside this record
+                // cut off inside this record: the times still come from the chunks recovered so far
+                startTime = chunks.isEmpty() ? 0 : start;
+                endTime = chunks.isEmpty() ? 0 : stop;
+                return false;
             }
             long body = pos + Mcap.RECORD_PREFIX;
             switch (op) {

@@ -306,6 +306,32 @@ class SpyLogTest {
     }
 
     @Test
+    void aLogCutOffInsideAChunkTakesItsTimesFromTheRecoveredChunks() throws IOException {
+        Path log = smallChunkLog("pioneer-laser-sonar.sonar.trace.jsonl", 16 * 1024);
+        List<long[]> spans;
+        long fullStart;
+        try (SpyLogReader full = SpyLogReader.open(log)) {
+            spans = full.chunkSpans();
+            fullStart = full.startTimeNanos();
+        }
+        assertTrue(spans.size() > 3, "chunks: " + spans.size());
+        long[] third = spans.get(2);
+        Path cut = tmp.resolve("cut-in-chunk.mcap");
+        Files.write(cut, Arrays.copyOf(Files.readAllBytes(log), (int) (third[0] + third[1] / 2)));
+        try (SpyLogReader r = SpyLogReader.open(cut)) {
+            assertTrue(r.recovered());
+            assertEquals(2, r.chunkCount());
+            List<LogEntry> e = all(r.entries());
+            assertFalse(e.isEmpty());
+            long max = e.stream().mapToLong(LogEntry::timeNanos).max().getAsLong();
+            assertEquals(fullStart, r.startTimeNanos());
+            assertEquals(e.get(0).timeNanos(), r.startTimeNanos());
+            assertEquals(max, r.endTimeNanos());
+            assertTrue(r.endTimeNanos() > r.startTimeNanos());
+        }
+    }
+
+    @Test
     void aLogWithoutItsFooterIsRecoveredWhole() throws IOException {
         Path log = tmp.resolve("full.mcap");
         TraceLogs.Expected x = TraceLogs.writeFile(TraceLogs.tracesDir().resolve("python-client.sentinel.trace.jsonl"),
