@@ -18,7 +18,6 @@ import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.PlayerFramer;
 import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.streams.StreamBus;
-import org.stagecraft.streams.StreamKey;
 import org.stagecraft.streams.StreamMessage;
 
 /**
@@ -31,7 +30,7 @@ import org.stagecraft.streams.StreamMessage;
 public final class ObservationPipeline implements WireObserver, AutoCloseable {
 
     /** Stream-bus message type of spy diagnostics (Player's types are 1..6). */
-    public static final int DIAGNOSTIC_TYPE = 0;
+    public static final int DIAGNOSTIC_TYPE = SpyStreams.DIAGNOSTIC_TYPE;
 
     private sealed interface Item {
         ConnectionInfo connection();
@@ -247,7 +246,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 DecodedMessage m = decoder.decode(f);
                 messages.increment();
                 MessageHeader h = f.header();
-                bus.publish(new StreamMessage(key(c, dir, h.type(), h.interf(), h.index(), h.subtype()), t,
+                bus.publish(new StreamMessage(SpyStreams.messageKey(c, dir, h), t,
                         new SpyMessage(c, dir, f.offset(), m)));
                 if (m.hasProblem()) {
                     decodeProblems.increment();
@@ -268,13 +267,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     }
 
     private void diagnosticOnBus(ConnectionInfo c, Direction dir, long offset, String text, long t) {
-        bus.publish(new StreamMessage(key(c, dir, DIAGNOSTIC_TYPE, 0, 0, 0), t, new SpyDiagnostic(c, dir, offset, text)));
-    }
-
-    /** Client-to-server messages go from the robot program to the Player port it used, and back. */
-    static StreamKey key(ConnectionInfo c, Direction dir, int type, int interf, int index, int subtype) {
-        return dir == Direction.CLIENT_TO_SERVER ? new StreamKey(c.client(), c.listen(), type, interf, index, subtype)
-                : new StreamKey(c.listen(), c.client(), type, interf, index, subtype);
+        bus.publish(new StreamMessage(SpyStreams.diagnosticKey(c, dir), t, new SpyDiagnostic(c, dir, offset, text)));
     }
 
     @FunctionalInterface

@@ -1,0 +1,44 @@
+package org.stagecraft.replay.log;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.stagecraft.spy.proxy.ConnectionInfo;
+
+/**
+ * A recorded session opened for replay and analysis: a spy log (MCAP), a recorded trace or a Player
+ * {@code writelog} file, all seen the same way, as a time-ordered sequence of {@link LogMessage}s.
+ * Implementations keep memory flat in the file's size: they read through an index or stream the
+ * file, never hold all messages. Open one with {@link SessionLogs#open(Path)}.
+ */
+public interface SessionLog extends AutoCloseable {
+
+    Path path();
+
+    LogFormat format();
+
+    /** Log time of the first message, in nanoseconds on the recorder's clock. */
+    long startNanos();
+
+    /** Log time of the last message. */
+    long endNanos();
+
+    /** The connections the log knows, in connection-number order. */
+    List<ConnectionInfo> connections();
+
+    /**
+     * What went wrong reading the file (empty when nothing did): e.g. where a truncated or corrupt
+     * file stopped being readable. The readable part still replays.
+     */
+    List<LogProblem> problems();
+
+    /**
+     * A new cursor positioned before the first message whose time is at or after {@code timeNanos}.
+     * Each cursor is independent; a cursor is used by one thread at a time.
+     */
+    LogCursor cursor(long timeNanos) throws IOException;
+
+    @Override
+    void close() throws IOException;
+}
