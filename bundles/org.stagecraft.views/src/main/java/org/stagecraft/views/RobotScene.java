@@ -29,7 +29,7 @@ public final class RobotScene implements AutoCloseable {
     /** Background grey and grid shades. */
     public static final float BACKGROUND = 0.92f, MINOR_GRID = 0.84f, MAJOR_GRID = 0.70f;
 
-    private final WorldModel world;
+    private volatile WorldModel world;
     private final Camera camera;
     private final LayerStack layers = new LayerStack(List.of());
     private final Map<String, StreamRenderer> renderers = new ConcurrentHashMap<>();
@@ -76,6 +76,16 @@ public final class RobotScene implements AutoCloseable {
         for (LayerSpec l : layers.inDrawOrder()) {
             feeds.get(l.id()).subscribe(bus, l.pattern(), renderers.get(l.id()).deliveryPolicy());
         }
+    }
+
+    /**
+     * Moves the layers to {@code newBus}, whose world model {@code newWorld} someone else feeds (the bus's
+     * {@link org.stagecraft.scene.SharedWorld}): a view that changes the source it follows.
+     */
+    public synchronized void reconnect(StreamBus newBus, WorldModel newWorld) {
+        disconnect();
+        world = newWorld;
+        connect(newBus, false);
     }
 
     public synchronized void disconnect() {

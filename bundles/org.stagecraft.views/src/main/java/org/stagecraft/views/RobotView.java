@@ -21,6 +21,7 @@ import org.eclipse.ui.IMemento;
 import org.eclipse.ui.IViewSite;
 import org.eclipse.ui.PartInitException;
 import org.eclipse.ui.part.ViewPart;
+import org.stagecraft.core.streams.BusSources;
 import org.stagecraft.core.streams.WorkbenchBus;
 import org.stagecraft.scene.Camera;
 import org.stagecraft.scene.DefaultLayers;
@@ -29,6 +30,7 @@ import org.stagecraft.scene.RobotId;
 import org.stagecraft.scene.RobotState;
 import org.stagecraft.scene.ViewSetup;
 import org.stagecraft.scene.SharedWorld;
+import org.stagecraft.streams.StreamBus;
 import org.stagecraft.views.internal.RedrawThrottle;
 import org.stagecraft.views.internal.ViewMemento;
 
@@ -44,16 +46,25 @@ import com.jogamp.opengl.swt.GLCanvas;
  * each keeps its layers and camera in its memento across workbench restarts.
  *
  * <p>Mouse: drag to pan, wheel to zoom at the pointer, double-click a robot to follow it (elsewhere: stop
- * following). The view menu holds the layers (visibility, colour, opacity, order), follow and reset.
+ * following). The view menu holds the layers (visibility, colour, opacity, order), follow and reset, and
+ * the source: the workbench bus ("Live") or the replay of an open Session Log ({@link BusSources}). The
+ * chosen source is remembered; while it is not open the view shows Live and goes back to it when it
+ * opens again.
  */
 public class RobotView extends ViewPart {
     public static final String ID = "org.stagecraft.views.robot";
     /** At most this many frames per second; data arriving faster is merged (newest wins). */
     public static final int MAX_FPS = 60;
+    /** Memento attribute holding the followed source's id. */
+    static final String SOURCE = "source";
 
     private static final ILog LOG = ILog.of(Platform.getBundle("org.stagecraft.views"));
 
     private ViewSetup restored;
+    /** The source chosen (may be a log that is not open now); {@link #bus} is what the view follows. */
+    private String sourceId = BusSources.LIVE;
+    private StreamBus bus;
+    private AutoCloseable sourcesListener;
     private SharedWorld shared;
     private AutoCloseable worldListener;
     private RobotScene scene;
@@ -70,6 +81,10 @@ public class RobotView extends ViewPart {
         super.init(site, memento);
         if (memento != null) {
             restored = ViewMemento.read(memento, p -> LOG.warn(p));
+            String source = memento.getString(SOURCE);
+            if (source != null) {
+                sourceId = source;
+            }
         }
     }
 
@@ -77,7 +92,8 @@ public class RobotView extends ViewPart {
     public void createPartControl(Composite parent) {
         canvas = GlSurfaces.create(parent);
         redraw = new RedrawThrottle(parent.getDisplay(), 1000 / MAX_FPS, this::drawNow);
-        shared = SharedWorld.of(WorkbenchBus.get());
+        bus = chosenBus();
+        shared = SharedWorld.of(bus);
         scene = new RobotScene(shared.world(), new Camera(), redraw::request);
         worldListener = shared.listen(redraw::request);
         applySetup(restored != null ? restored : new ViewSetup(DefaultLayers.create(), Map.of()));
@@ -85,8 +101,58 @@ public class RobotView extends ViewPart {
         canvas.addGLEventListener(new Drawer());
         installMouse();
         installMenu();
-        scene.connect(WorkbenchBus.get(), false); // the world model is the bus's shared one
+        scene.connect(bus, false); // the world model is the bus's shared one
+        sourcesListener = BusSources.listen(() -> parent.getDisplay().asyncExec(this::attach));
+        describeSource();
         redraw.request();
+    }
+
+    /** The id of the source chosen ({@link BusSources#LIVE} or a log's), whether or not it is open now. */
+    public String sourceId() {
+        return sourceId;
+    }
+
+    /** The bus the view follows now. */
+    public StreamBus bus() {
+        return bus;
+    }
+
+    /** Follows the source with that id (Live while it is not open). UI thread. */
+    public void followSource(String id) {
+        sourceId = id == null ? BusSources.LIVE : id;
+        attach();
+    }
+
+    private StreamBus chosenBus() {
+        return BusSources.find(sourceId).map(BusSources.Source::bus).orElseGet(WorkbenchBus::get);
+    }
+
+    /** Moves to the chosen source's bus if that changed (chosen, opened or closed), with fresh layers. */
+    private void attach() {
+        if (scene == null || canvas == null || canvas.isDisposed()) {
+            return;
+        }
+        StreamBus target = chosenBus();
+        if (target != bus) {
+            bus = target;
+            closeWorldListener();
+            shared = SharedWorld.of(bus);
+            worldListener = shared.listen(redraw::request);
+            scene.reconnect(bus, shared.world());
+            applySetup(setup()); // new renderers and feeds: nothing drawn from the old source stays
+            followFirstRobot = true; // the new source's robots may have other addresses
+            redraw.request();
+        }
+        describeSource();
+    }
+
+    private void describeSource() {
+        if (BusSources.LIVE.equals(sourceId)) {
+            setContentDescription("");
+            return;
+        }
+        setContentDescription(BusSources.find(sourceId).map(s -> "Source: " + s.label())
+                .orElse("Source: " + sourceId + " is not open; showing Live"));
     }
 
     public RobotScene scene() {
@@ -125,6 +191,7 @@ public class RobotView extends ViewPart {
     @Override
     public void saveState(IMemento memento) {
         ViewMemento.write(memento, setup());
+        memento.putString(SOURCE, sourceId);
     }
 
     /** Draws a frame now (UI thread) and returns what it drew, read back from the back buffer. */
@@ -154,14 +221,26 @@ public class RobotView extends ViewPart {
         if (scene != null) {
             scene.close();
         }
+        closeWorldListener();
+        if (sourcesListener != null) {
+            try {
+                sourcesListener.close();
+            } catch (Exception e) {
+                LOG.error("Robot View: " + e.getMessage(), e);
+            }
+        }
+        super.dispose(); // the canvas goes with the part; its GLEventListener.dispose frees GPU data
+    }
+
+    private void closeWorldListener() {
         if (worldListener != null) {
             try {
                 worldListener.close();
             } catch (Exception e) {
                 LOG.error("Robot View: " + e.getMessage(), e);
             }
+            worldListener = null;
         }
-        super.dispose(); // the canvas goes with the part; its GLEventListener.dispose frees GPU data
     }
 
     private void drawNow() {
@@ -262,6 +341,12 @@ public class RobotView extends ViewPart {
             }
             m.add(follow);
             m.add(action("Centre on robots", IAction.AS_PUSH_BUTTON, false, this::centreOnRobots));
+            m.add(new Separator());
+            MenuManager source = new MenuManager("Source");
+            for (BusSources.Source s : BusSources.all()) {
+                source.add(action(s.label(), IAction.AS_RADIO_BUTTON, s.id().equals(sourceId), () -> followSource(s.id())));
+            }
+            m.add(source);
         });
         // the menu must exist before the first "about to show"
         menu.add(new Separator());

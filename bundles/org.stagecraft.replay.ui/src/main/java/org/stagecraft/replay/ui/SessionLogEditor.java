@@ -1,0 +1,504 @@
+package org.stagecraft.replay.ui;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.eclipse.core.runtime.ILog;
+import org.eclipse.core.runtime.IProgressMonitor;
+import org.eclipse.core.runtime.IStatus;
+import org.eclipse.core.runtime.Platform;
+import org.eclipse.core.runtime.Status;
+import org.eclipse.core.runtime.jobs.Job;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.SashForm;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.ui.IEditorInput;
+import org.eclipse.ui.IEditorSite;
+import org.eclipse.ui.IWorkbenchPage;
+import org.eclipse.ui.PartInitException;
+import org.eclipse.ui.part.EditorPart;
+import org.stagecraft.core.codec.DecoderExtensionRegistry;
+import org.stagecraft.core.streams.BusSources;
+import org.stagecraft.core.streams.StreamProcessorExtensionRegistry;
+import org.stagecraft.replay.analysis.MessageColumns;
+import org.stagecraft.replay.analysis.TimelineDensity;
+import org.stagecraft.replay.log.LogMessage;
+import org.stagecraft.replay.log.LogProblem;
+import org.stagecraft.replay.log.SessionLog;
+import org.stagecraft.replay.log.SessionLogs;
+import org.stagecraft.replay.play.ReplayClock;
+import org.stagecraft.replay.play.ReplayListener;
+import org.stagecraft.replay.play.Replayer;
+import org.stagecraft.replay.ui.internal.EditorInputs;
+import org.stagecraft.replay.ui.internal.ExportMenu;
+import org.stagecraft.replay.ui.internal.InspectorPanel;
+import org.stagecraft.replay.ui.internal.TimelineCanvas;
+import org.stagecraft.replay.ui.internal.TransportBar;
+import org.stagecraft.replay.ui.internal.UiThrottle;
+import org.stagecraft.scene.SharedWorld;
+import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamProcessors;
+import org.stagecraft.views.RobotView;
+
+/**
+ * The Session Log editor: opens a spy log, a recorded trace or a Player writelog file
+ * ({@link SessionLogs}) and replays it into a stream bus of its own, registered as a
+ * {@link BusSources} entry so Robot Views (and anything else on a bus) can follow it exactly as they
+ * follow live data. Shows a timeline (a track per stream), the transport and the packet inspector;
+ * the Plot view and the export actions work on it.
+ *
+ * <p>Nothing here holds the log's messages: the timeline is a fixed number of buckets filled by a
+ * background pass, the inspector a window read around the replay position. The replay thread only
+ * asks for UI updates ({@link UiThrottle}); it never waits for the display. A file that cannot be
+ * read completely (truncated, corrupt, still being written) opens with what is readable and says
+ * where it stopped; Reload reads it again.
+ */
+public class SessionLogEditor extends EditorPart {
+    public static final String ID = "org.stagecraft.replay.ui.sessionLogEditor";
+    /** Timeline resolution: buckets across the whole log, whatever its length. */
+    public static final int BUCKETS = 600;
+    private static final ILog LOG = ILog.of(Platform.getBundle("org.stagecraft.replay.ui"));
+    private static final AtomicInteger VIEWS = new AtomicInteger();
+
+    private Path file;
+    private final MessageColumns columns = new MessageColumns(DecoderExtensionRegistry.get());
+    private final StreamBus bus = new StreamBus();
+    private final ExecutorService reader = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "Session Log inspector reader");
+        t.setDaemon(true);
+        return t;
+    });
+    private StreamProcessors processors;
+    private AutoCloseable source;
+    private String sourceId;
+    private volatile SessionLog log;
+    private volatile Replayer replayer;
+    private String openError;
+    private Job densityJob;
+    private volatile TimelineDensity density;
+
+    private TransportBar transport;
+    private Label status;
+    private TimelineCanvas timeline;
+    private InspectorPanel inspector;
+    private UiThrottle updates, densityUpdates;
+    private volatile LogMessage lastPublished;
+
+    @Override
+    public void init(IEditorSite site, IEditorInput input) throws PartInitException {
+        setSite(site);
+        setInput(input);
+        file = EditorInputs.path(input);
+        if (file == null) {
+            throw new PartInitException("The Session Log editor opens local files only, not " + input.getToolTipText());
+        }
+        setPartName(file.getFileName().toString());
+        setTitleToolTip(file.toString());
+    }
+
+    @Override
+    public void createPartControl(Composite parent) {
+        Composite root = new Composite(parent, SWT.NONE);
+        GridLayout layout = new GridLayout(1, false);
+        layout.marginWidth = layout.marginHeight = 0;
+        root.setLayout(layout);
+        transport = new TransportBar(root, new Transport());
+        transport.control().setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        status = new Label(root, SWT.WRAP);
+        status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        SashForm split = new SashForm(root, SWT.VERTICAL);
+        split.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        timeline = new TimelineCanvas(split, this::seek);
+        inspector = new InspectorPanel(split, columns, reader, this::inspectorSelected);
+        split.setWeights(35, 65);
+        updates = new UiThrottle(root.getDisplay(), 50, this::showReplayState);
+        densityUpdates = new UiThrottle(root.getDisplay(), 250, this::showDensity);
+
+        SharedWorld.of(bus); // the world model listens from the first message: geometry replies come once
+        processors = StreamProcessorExtensionRegistry.startAll(bus); // derived streams, as on the live bus
+        registerSource();
+        open(Long.MIN_VALUE);
+    }
+
+    private void registerSource() {
+        String id = "log:" + file.toAbsolutePath();
+        for (int n = 2; BusSources.find(id).isPresent(); n++) {
+            id = "log:" + file.toAbsolutePath() + "#" + n; // the same file open twice
+        }
+        sourceId = id;
+        source = BusSources.add(new BusSources.Source(id, "Log " + file.getFileName(), bus));
+    }
+
+    /** Opens (or reopens) the file and starts at {@code position} (clamped to the log). */
+    private void open(long position) {
+        openError = null;
+        try {
+            log = SessionLogs.open(file);
+        } catch (IOException | RuntimeException e) {
+            log = null;
+            openError = e.getMessage() == null ? e.toString() : e.getMessage();
+            LOG.warn("Session Log: cannot open " + file + ": " + openError);
+        }
+        SessionLog l = log;
+        transport.setEnabled(l != null);
+        if (l == null) {
+            showStatus();
+            return;
+        }
+        Replayer r = new Replayer(l, bus, ReplayClock.system());
+        r.addListener(new ReplayListener() {
+            @Override
+            public void moved(long timeNanos, LogMessage last) {
+                lastPublished = last;
+                updates.request();
+            }
+
+            @Override
+            public void stateChanged(boolean playing, double speed) {
+                updates.request();
+            }
+        });
+        if (position != Long.MIN_VALUE) {
+            r.seek(position);
+        }
+        replayer = r;
+        timeline.setRange(l.startNanos(), l.endNanos());
+        timeline.setStops(l.problems().stream().map(LogProblem::timeNanos).toList());
+        timeline.setSnapshot(null);
+        startDensity(l);
+        inspector.setLog(l, r.position());
+        showStatus();
+        showReplayState();
+    }
+
+    private void startDensity(SessionLog l) {
+        TimelineDensity d = new TimelineDensity(l.startNanos(), l.endNanos(), BUCKETS, columns);
+        density = d;
+        densityJob = Job.create("Reading the streams of " + file.getFileName(), (IProgressMonitor monitor) -> {
+            monitor.beginTask("Reading " + file.getFileName(), 1000);
+            int[] done = { 0 };
+            try {
+                d.fill(l, f -> {
+                    int now = (int) (f * 1000);
+                    monitor.worked(now - done[0]);
+                    done[0] = now;
+                    densityUpdates.request();
+                }, monitor::isCanceled);
+            } catch (IOException | RuntimeException e) {
+                LOG.warn("Session Log: timeline of " + file + " stopped: " + e.getMessage());
+            }
+            densityUpdates.request();
+            monitor.done();
+            return Status.OK_STATUS;
+        });
+        densityJob.setSystem(false);
+        densityJob.schedule();
+    }
+
+    private void showDensity() {
+        TimelineDensity d = density;
+        if (d != null && timeline != null && !timeline.canvas().isDisposed()) {
+            timeline.setSnapshot(d.snapshot());
+        }
+    }
+
+    private void showStatus() {
+        if (status.isDisposed()) {
+            return;
+        }
+        status.setText(statusText());
+        status.setForeground(status.getDisplay().getSystemColor(
+                openError != null || (log != null && !log.problems().isEmpty()) ? SWT.COLOR_DARK_RED : SWT.COLOR_WIDGET_FOREGROUND));
+        status.getParent().layout();
+    }
+
+    /** What the status line says: the log, and where a damaged one stopped. */
+    public String statusText() {
+        SessionLog l = log;
+        if (l == null) {
+            return "Cannot open " + file + ": " + openError;
+        }
+        StringBuilder s = new StringBuilder();
+        s.append(switch (l.format()) {
+            case SPY_LOG -> "Spy log";
+            case PLAYER_TRACE -> "Recorded trace";
+            case WRITELOG -> "Player writelog";
+        });
+        s.append(String.format(Locale.ROOT, ", %.3f s, %d connection%s", (l.endNanos() - l.startNanos()) / 1e9,
+                l.connections().size(), l.connections().size() == 1 ? "" : "s"));
+        try {
+            s.append(String.format(Locale.ROOT, ", %,d bytes", Files.size(file)));
+        } catch (IOException e) {
+            // the size is only for information
+        }
+        List<LogProblem> problems = l.problems();
+        for (LogProblem p : problems) {
+            s.append("\n").append(p.where()).append(String.format(Locale.ROOT, " (%.3f s): ", (p.timeNanos() - l.startNanos()) / 1e9))
+                    .append(p.text());
+        }
+        return s.toString();
+    }
+
+    private void showReplayState() {
+        Replayer r = replayer;
+        SessionLog l = log;
+        if (r == null || l == null || timeline.canvas().isDisposed()) {
+            return;
+        }
+        long p = r.position();
+        transport.show((p - l.startNanos()) / 1e9, (l.endNanos() - l.startNanos()) / 1e9, r.playing(), r.speed());
+        timeline.setPosition(p);
+        inspector.follow(p, lastPublished);
+    }
+
+    private void seek(long timeNanos) {
+        Replayer r = replayer;
+        if (r != null) {
+            lastPublished = null;
+            r.seek(timeNanos);
+            updates.request();
+        }
+    }
+
+    /** A row chosen in the inspector: the replay moves there and publishes it, so views show that moment. */
+    private void inspectorSelected(LogMessage m) {
+        Replayer r = replayer;
+        if (r != null) {
+            r.seekTo(m);
+            lastPublished = r.stepForward();
+            updates.request();
+        }
+    }
+
+    // --- for the tests, the Plot view and the export actions -------------------------------------
+
+    public Path file() {
+        return file;
+    }
+
+    /** The open log, or null when the file could not be opened at all. */
+    public SessionLog log() {
+        return log;
+    }
+
+    public Replayer replayer() {
+        return replayer;
+    }
+
+    /** The bus this editor replays into. */
+    public StreamBus bus() {
+        return bus;
+    }
+
+    /** This editor's entry in {@link BusSources}. */
+    public String sourceId() {
+        return sourceId;
+    }
+
+    public MessageColumns columns() {
+        return columns;
+    }
+
+    public TimelineCanvas timeline() {
+        return timeline;
+    }
+
+    public InspectorPanel inspector() {
+        return inspector;
+    }
+
+    public TransportBar transport() {
+        return transport;
+    }
+
+    /** Whether the background pass that fills the timeline has finished. */
+    public boolean timelineComplete() {
+        Job j = densityJob;
+        return j != null && j.getState() == Job.NONE && j.getResult() != null;
+    }
+
+    /** Reads the file again, keeping the replay position (a growing log shows what was added). */
+    public void reload() {
+        Replayer old = replayer;
+        long position = old == null ? Long.MIN_VALUE : old.position();
+        closeLog();
+        open(position);
+    }
+
+    /** Opens a new Robot View following this log's replay. */
+    public RobotView showInRobotView() throws PartInitException {
+        IWorkbenchPage page = getSite().getPage();
+        RobotView view = (RobotView) page.showView(RobotView.ID, "log" + VIEWS.incrementAndGet(), IWorkbenchPage.VIEW_ACTIVATE);
+        view.followSource(sourceId);
+        return view;
+    }
+
+    /** Opens a Plot view on this log. */
+    public PlotView showPlot() throws PartInitException {
+        PlotView plot = (PlotView) getSite().getPage().showView(PlotView.ID, null, IWorkbenchPage.VIEW_ACTIVATE);
+        plot.setEditor(this);
+        return plot;
+    }
+
+    private final class Transport implements TransportBar.Host {
+        @Override
+        public void toStart() {
+            SessionLog l = log;
+            if (l != null) {
+                seek(l.startNanos());
+            }
+        }
+
+        @Override
+        public void stepBack() {
+            Replayer r = replayer;
+            if (r != null) {
+                lastPublished = r.stepBack();
+                updates.request();
+            }
+        }
+
+        @Override
+        public void playPause() {
+            Replayer r = replayer;
+            if (r != null) {
+                if (r.playing()) {
+                    r.pause();
+                } else {
+                    r.play();
+                }
+                updates.request();
+            }
+        }
+
+        @Override
+        public void stepForward() {
+            Replayer r = replayer;
+            if (r != null) {
+                lastPublished = r.stepForward();
+                updates.request();
+            }
+        }
+
+        @Override
+        public void speed(double speed) {
+            Replayer r = replayer;
+            if (r != null) {
+                r.setSpeed(speed);
+            }
+        }
+
+        @Override
+        public void seekSeconds(double seconds) {
+            SessionLog l = log;
+            if (l != null) {
+                seek(l.startNanos() + Math.round(seconds * 1e9));
+            }
+        }
+
+        @Override
+        public void reload() {
+            SessionLogEditor.this.reload();
+        }
+
+        @Override
+        public void showInRobotView() {
+            try {
+                SessionLogEditor.this.showInRobotView();
+            } catch (PartInitException e) {
+                LOG.log(e.getStatus());
+            }
+        }
+
+        @Override
+        public void plot() {
+            try {
+                showPlot();
+            } catch (PartInitException e) {
+                LOG.log(e.getStatus());
+            }
+        }
+
+        @Override
+        public void export(Composite anchor) {
+            ExportMenu.show(anchor, SessionLogEditor.this);
+        }
+    }
+
+    private void closeLog() {
+        Job j = densityJob;
+        if (j != null) {
+            j.cancel();
+            try {
+                j.join(5_000, null);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        Replayer r = replayer;
+        replayer = null;
+        if (r != null) {
+            r.close();
+        }
+        SessionLog l = log;
+        log = null;
+        if (l != null) {
+            try {
+                l.close();
+            } catch (IOException e) {
+                LOG.warn("Session Log: closing " + file + ": " + e.getMessage());
+            }
+        }
+    }
+
+    @Override
+    public void dispose() {
+        closeLog();
+        reader.shutdownNow();
+        try {
+            if (source != null) {
+                source.close(); // views following this log go back to Live
+            }
+        } catch (Exception e) {
+            LOG.log(new Status(IStatus.WARNING, "org.stagecraft.replay.ui", e.getMessage(), e));
+        }
+        if (processors != null) {
+            processors.stopAll();
+        }
+        bus.close();
+        super.dispose();
+    }
+
+    @Override
+    public void setFocus() {
+        transport.control().setFocus();
+    }
+
+    @Override
+    public void doSave(IProgressMonitor monitor) {
+        // a log is read, never written
+    }
+
+    @Override
+    public void doSaveAs() {
+    }
+
+    @Override
+    public boolean isDirty() {
+        return false;
+    }
+
+    @Override
+    public boolean isSaveAsAllowed() {
+        return false;
+    }
+}

@@ -1,0 +1,343 @@
+package org.stagecraft.replay.ui.internal;
+
+import java.io.IOException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+
+import org.eclipse.jface.resource.JFaceResources;
+import org.eclipse.jface.viewers.ColumnLabelProvider;
+import org.eclipse.jface.viewers.TreeViewer;
+import org.eclipse.jface.viewers.TreeViewerColumn;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.SashForm;
+import org.eclipse.swt.graphics.Color;
+import org.eclipse.swt.layout.GridData;
+import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Label;
+import org.eclipse.swt.widgets.Table;
+import org.eclipse.swt.widgets.TableColumn;
+import org.eclipse.swt.widgets.TableItem;
+import org.eclipse.swt.widgets.Text;
+import org.stagecraft.replay.analysis.HexDump;
+import org.stagecraft.replay.analysis.InspectorRow;
+import org.stagecraft.replay.analysis.MessageColumns;
+import org.stagecraft.replay.analysis.MessageFilter;
+import org.stagecraft.replay.analysis.MessageWindow;
+import org.stagecraft.replay.log.LogMessage;
+import org.stagecraft.replay.log.SessionLog;
+
+/**
+ * The packet inspector: a virtual table of a {@link MessageWindow} (a few hundred filtered entries
+ * around the replay position, read in the background with a cursor), filter fields (streams, free
+ * text), and for the selected entry its decoded field tree and hex dump. Selecting a row hands the
+ * entry to {@code onSelect} (the editor moves the replay there). Problems and gaps are marked in red.
+ */
+public final class InspectorPanel {
+    /** Rows read on each side of the anchor, and entries skipped at most looking for them. */
+    public static final int HALF_WINDOW = 200, SCAN_LIMIT = 200_000;
+
+    private final Composite root;
+    private final Text streams, text;
+    private final Label status;
+    private final Table table;
+    private final TreeViewer fields;
+    private final Text hex;
+    private final ExecutorService reader;
+    private final Consumer<LogMessage> onSelect;
+    private final AtomicLong generation = new AtomicLong();
+    private final Color marked = new Color(255, 222, 222);
+    private SessionLog log;
+    private MessageColumns columns;
+    private MessageFilter filter;
+    private MessageWindow window = new MessageWindow(java.util.List.of(), 0, true, true);
+    private boolean loading;
+    private long shownPosition = Long.MIN_VALUE;
+    private LogMessage detailed;
+
+    public InspectorPanel(Composite parent, MessageColumns columns, ExecutorService reader, Consumer<LogMessage> onSelect) {
+        this.columns = columns;
+        this.reader = reader;
+        this.onSelect = onSelect;
+        this.filter = MessageFilter.all(columns);
+        root = new Composite(parent, SWT.NONE);
+        root.setLayout(new GridLayout(1, false));
+
+        Composite bar = new Composite(root, SWT.NONE);
+        bar.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        bar.setLayout(new GridLayout(7, false));
+        new Label(bar, SWT.NONE).setText("Streams:");
+        streams = new Text(bar, SWT.BORDER | SWT.SEARCH);
+        streams.setMessage("laser:0, position2d * or type=1 dev=6");
+        streams.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        new Label(bar, SWT.NONE).setText("Text:");
+        text = new Text(bar, SWT.BORDER | SWT.SEARCH);
+        text.setMessage("subtype, device, summary\u2026");
+        text.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        Button earlier = new Button(bar, SWT.PUSH);
+        earlier.setText("\u25C0 Earlier");
+        Button later = new Button(bar, SWT.PUSH);
+        later.setText("Later \u25B6");
+        status = new Label(bar, SWT.NONE);
+        status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
+        status.setText("");
+        streams.addListener(SWT.DefaultSelection, e -> applyFilter());
+        text.addListener(SWT.DefaultSelection, e -> applyFilter());
+        earlier.addListener(SWT.Selection, e -> pageEarlier());
+        later.addListener(SWT.Selection, e -> pageLater());
+
+        SashForm split = new SashForm(root, SWT.HORIZONTAL);
+        split.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
+        table = new Table(split, SWT.VIRTUAL | SWT.FULL_SELECTION | SWT.SINGLE | SWT.BORDER);
+        table.setHeaderVisible(true);
+        table.setLinesVisible(true);
+        int[] widths = { 90, 150, 40, 100, 80, 110, 50, 420 };
+        for (int i = 0; i < MessageColumns.TITLES.length; i++) {
+            TableColumn c = new TableColumn(table, i == 6 ? SWT.RIGHT : SWT.LEFT);
+            c.setText(MessageColumns.TITLES[i]);
+            c.setWidth(widths[i]);
+        }
+        table.addListener(SWT.SetData, e -> fill((TableItem) e.item, table.indexOf((TableItem) e.item)));
+        table.addListener(SWT.Selection, e -> rowSelected(table.getSelectionIndex()));
+
+        SashForm detail = new SashForm(split, SWT.VERTICAL);
+        fields = new TreeViewer(detail, SWT.BORDER | SWT.FULL_SELECTION);
+        fields.getTree().setHeaderVisible(true);
+        TreeViewerColumn name = new TreeViewerColumn(fields, SWT.LEFT);
+        name.getColumn().setText("Field");
+        name.getColumn().setWidth(160);
+        name.setLabelProvider(ColumnLabelProvider.createTextProvider(FieldTreeContent::name));
+        TreeViewerColumn value = new TreeViewerColumn(fields, SWT.LEFT);
+        value.getColumn().setText("Value");
+        value.getColumn().setWidth(160);
+        value.setLabelProvider(ColumnLabelProvider.createTextProvider(FieldTreeContent::value));
+        fields.setContentProvider(new FieldTreeContent());
+        hex = new Text(detail, SWT.MULTI | SWT.READ_ONLY | SWT.V_SCROLL | SWT.H_SCROLL | SWT.BORDER);
+        hex.setFont(JFaceResources.getTextFont());
+        detail.setWeights(55, 45);
+        split.setWeights(62, 38);
+    }
+
+    public Composite control() {
+        return root;
+    }
+
+    public Table table() {
+        return table;
+    }
+
+    public MessageWindow window() {
+        return window;
+    }
+
+    public MessageFilter filter() {
+        return filter;
+    }
+
+    public TreeViewer fields() {
+        return fields;
+    }
+
+    public String hexText() {
+        return hex.getText();
+    }
+
+    public String statusText() {
+        return status.getText();
+    }
+
+    /** The entry whose fields and bytes are shown. */
+    public LogMessage detailed() {
+        return detailed;
+    }
+
+    /** A new (or reloaded) log; pages around {@code position}. */
+    public void setLog(SessionLog newLog, long position) {
+        log = newLog;
+        window = new MessageWindow(java.util.List.of(), 0, true, true);
+        table.setItemCount(0);
+        pageAround(position, null);
+    }
+
+    /** Sets the filter fields and applies them (the same as typing and pressing Enter). */
+    public void setFilter(String streamText, String freeText) {
+        streams.setText(streamText);
+        text.setText(freeText);
+        applyFilter();
+    }
+
+    private void applyFilter() {
+        try {
+            filter = MessageFilter.of(streams.getText(), text.getText(), columns);
+        } catch (IllegalArgumentException e) {
+            status.setText(e.getMessage());
+            status.getParent().layout();
+            return;
+        }
+        pageAround(shownPosition == Long.MIN_VALUE && log != null ? log.startNanos() : shownPosition, null);
+    }
+
+    /**
+     * The replay moved to {@code position} after publishing {@code last}: selects its row, reading a
+     * new window when the position left the one held.
+     */
+    public void follow(long position, LogMessage last) {
+        shownPosition = position;
+        if (log == null || loading) {
+            return;
+        }
+        boolean outside = window.isEmpty() ? !(window.atStart() && window.atEnd())
+                : (position < window.rows().get(0).message().timeNanos() && !window.atStart())
+                        || (position > window.rows().get(window.rows().size() - 1).message().timeNanos() && !window.atEnd());
+        if (outside) {
+            pageAround(position, last);
+            return;
+        }
+        select(last);
+    }
+
+    private void select(LogMessage last) {
+        int i = window.indexOf(last);
+        if (i >= 0) {
+            table.setSelection(i);
+            showDetails(last);
+        } else {
+            table.deselectAll();
+        }
+    }
+
+    private void pageEarlier() {
+        if (!window.isEmpty() && log != null) {
+            pageAround(window.rows().get(0).message(), false);
+        }
+    }
+
+    private void pageLater() {
+        if (!window.isEmpty() && log != null) {
+            pageAround(window.rows().get(window.rows().size() - 1).message(), true);
+        }
+    }
+
+    /** A window ending (earlier) or starting (later) at an entry. */
+    private void pageAround(LogMessage edge, boolean later) {
+        SessionLog l = log;
+        MessageFilter f = filter;
+        load(() -> later ? MessageWindow.around(l, f, edge, 0, 2 * HALF_WINDOW, SCAN_LIMIT)
+                : MessageWindow.around(l, f, edge, 2 * HALF_WINDOW, 1, SCAN_LIMIT), null);
+    }
+
+    private void pageAround(long position, LogMessage last) {
+        SessionLog l = log;
+        if (l == null) {
+            return;
+        }
+        MessageFilter f = filter;
+        load(() -> MessageWindow.around(l, f, position, HALF_WINDOW, HALF_WINDOW, SCAN_LIMIT), last);
+    }
+
+    private interface WindowRead {
+        MessageWindow read() throws IOException;
+    }
+
+    /** Reads a window off the UI thread; only the newest request's result is shown. */
+    private void load(WindowRead read, LogMessage select) {
+        long g = generation.incrementAndGet();
+        loading = true;
+        status.setText("reading\u2026");
+        var display = table.getDisplay();
+        reader.execute(() -> {
+            MessageWindow w;
+            String error = null;
+            try {
+                w = read.read();
+            } catch (IOException | RuntimeException e) {
+                w = null;
+                error = "cannot read the log: " + e.getMessage();
+            }
+            MessageWindow result = w;
+            String problem = error;
+            if (!display.isDisposed()) {
+                display.asyncExec(() -> shown(g, result, problem, select));
+            }
+        });
+    }
+
+    private void shown(long g, MessageWindow w, String error, LogMessage select) {
+        if (table.isDisposed() || g != generation.get()) {
+            return;
+        }
+        loading = false;
+        if (w == null) {
+            status.setText(error);
+            return;
+        }
+        window = w;
+        table.clearAll();
+        table.setItemCount(w.rows().size());
+        status.setText(describe(w));
+        status.getParent().layout();
+        if (select != null) {
+            select(select);
+        } else if (w.anchorIndex() < w.rows().size()) {
+            table.setTopIndex(Math.max(0, w.anchorIndex() - 5));
+        }
+    }
+
+    private String describe(MessageWindow w) {
+        if (w.isEmpty()) {
+            return w.atStart() && w.atEnd() ? "no entry matches " + filter
+                    : "no match within " + SCAN_LIMIT + " entries; move the replay or change the filter";
+        }
+        long start = log.startNanos();
+        return w.rows().size() + " entries, " + MessageColumns.time(w.rows().get(0).message().timeNanos(), start) + " to "
+                + MessageColumns.time(w.rows().get(w.rows().size() - 1).message().timeNanos(), start) + " s"
+                + (w.atStart() ? ", from the start" : "") + (w.atEnd() ? ", to the end" : "");
+    }
+
+    private void fill(TableItem item, int index) {
+        if (index < 0 || index >= window.rows().size()) {
+            return;
+        }
+        InspectorRow row = window.rows().get(index);
+        String[] cells = columns.row(row.message(), log.startNanos());
+        if (row.gapBytes() > 0) {
+            cells[7] = "[" + row.gapBytes() + " bytes missing before] " + cells[7];
+        }
+        item.setText(cells);
+        if (row.marked()) {
+            item.setBackground(marked);
+        }
+    }
+
+    /** Selects row {@code index} as a user would (tests: the same path as a click). */
+    public void selectRow(int index) {
+        table.setSelection(index);
+        rowSelected(index);
+    }
+
+    private void rowSelected(int index) {
+        if (index < 0 || index >= window.rows().size()) {
+            return;
+        }
+        LogMessage m = window.rows().get(index).message();
+        showDetails(m);
+        onSelect.accept(m);
+    }
+
+    private void showDetails(LogMessage m) {
+        if (m == detailed) {
+            return;
+        }
+        detailed = m;
+        if (m.decoded() != null && m.decoded().body() != null) {
+            fields.setInput(FieldTreeContent.input(m.decoded().body()));
+            fields.expandToLevel(2);
+        } else {
+            fields.setInput(null);
+        }
+        String head = m.isProblem() ? "problem: " + columns.summary(m) + "\n\n" : "";
+        hex.setText(head + HexDump.of(m.bytes()));
+    }
+}
