@@ -29,10 +29,16 @@ final class EntryConverter {
         return c != null ? c : new ConnectionInfo(conn, port, "connection " + conn, "port " + port, "");
     }
 
+    /** A connection that carried no bytes is not among the indexed ones: its open event names it. */
+    private ConnectionInfo opened(LogEntry.Opened o) {
+        ConnectionInfo c = connections.get(o.conn());
+        return c != null ? c : new ConnectionInfo(o.conn(), -1, o.client(), o.listen(), o.upstream());
+    }
+
     LogMessage convert(LogEntry e) {
         return switch (e) {
-            case LogEntry.Opened o -> new LogMessage(o.timeNanos(), connection(o.conn(), -1), null, -1,
-                    LogMessage.Kind.OPENED, null, null, "");
+            case LogEntry.Opened o -> new LogMessage(o.timeNanos(), opened(o), null, -1, LogMessage.Kind.OPENED, null,
+                    null, "");
             case LogEntry.Closed c -> new LogMessage(c.timeNanos(), connection(c.conn(), -1), null, -1,
                     LogMessage.Kind.CLOSED, null, null, c.reason());
             case LogEntry.Diagnostic d -> new LogMessage(d.timeNanos(), connection(d.conn(), -1), d.dir(),

@@ -34,7 +34,9 @@ final class SpyLogSession implements SessionLog {
         this.reader = reader;
         this.cleanup = cleanup;
         Map<Integer, ConnectionInfo> byId = new LinkedHashMap<>();
-        for (LogConnection c : reader.connections()) {
+        // from the summary when the log records addresses with its channels; else from the open events
+        List<LogConnection> known = reader.indexedConnections();
+        for (LogConnection c : known.isEmpty() ? reader.connections() : known) {
             byId.put(c.conn(), new ConnectionInfo(c.conn(), c.port(), orElse(c.client(), "connection " + c.conn()),
                     orElse(c.listen(), "port " + c.port()), orElse(c.upstream(), "")));
         }
