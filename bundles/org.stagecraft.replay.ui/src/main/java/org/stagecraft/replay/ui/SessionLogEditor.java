@@ -141,10 +141,12 @@ public class SessionLogEditor extends EditorPart {
     /** Opens (or reopens) the file and starts at {@code position} (clamped to the log). */
     private void open(long position) {
         openError = null;
+        Replayer r = null;
         try {
             log = SessionLogs.open(file);
+            r = new Replayer(log, bus, ReplayClock.system());
         } catch (IOException | RuntimeException e) {
-            log = null;
+            closeLog();
             openError = e.getMessage() == null ? e.toString() : e.getMessage();
             LOG.warn("Session Log: cannot open " + file + ": " + openError);
         }
@@ -154,7 +156,6 @@ public class SessionLogEditor extends EditorPart {
             showStatus();
             return;
         }
-        Replayer r = new Replayer(l, bus, ReplayClock.system());
         r.addListener(new ReplayListener() {
             @Override
             public void moved(long timeNanos, LogMessage last) {
@@ -233,7 +234,7 @@ public class SessionLogEditor extends EditorPart {
             case PLAYER_TRACE -> "Recorded trace";
             case WRITELOG -> "Player writelog";
         });
-        s.append(String.format(Locale.ROOT, ", %.3f s, %d connection%s", (l.endNanos() - l.startNanos()) / 1e9,
+        s.append(String.format(Locale.ROOT, ", %.3f s, %,d messages, %d connection%s", (l.endNanos() - l.startNanos()) / 1e9, l.messageCount(),
                 l.connections().size(), l.connections().size() == 1 ? "" : "s"));
         try {
             s.append(String.format(Locale.ROOT, ", %,d bytes", Files.size(file)));

@@ -8,74 +8,89 @@ import java.util.List;
 import org.stagecraft.player.codec.FieldVisitor;
 import org.stagecraft.player.codec.MessageBody;
 
-/** STAND-IN for the lead's FieldTree (replay-ui branch only; replaced by main's on merge). */
-public record FieldTree(String name, Kind kind, String value, List<FieldTree> children) {
-    public enum Kind {
-        STRUCT, LIST, INTEGER, FLOAT, TEXT, OPAQUE
+/**
+ * Builds the field tree of a decoded body from what the body reports through {@link FieldVisitor},
+ * so the inspector, plots and exports see every message kind the same way, including kinds that
+ * plug-ins add.
+ */
+public final class FieldTree implements FieldVisitor {
+    /** Name of the root struct that holds a body's top-level fields. */
+    public static final String ROOT = "body";
+
+    private record Open(String name, Field.Kind kind, List<Field> children) {
     }
 
-    public static FieldTree of(MessageBody body) {
-        Deque<List<FieldTree>> stack = new ArrayDeque<>();
-        Deque<String[]> names = new ArrayDeque<>();
-        stack.push(new ArrayList<>());
-        body.describe(new FieldVisitor() {
-            int index() {
-                return stack.peek().size();
-            }
+    private final Deque<Open> open = new ArrayDeque<>();
 
-            String n(String name) {
-                return name != null ? name : "[" + index() + "]";
-            }
+    private FieldTree() {
+        open.push(new Open(ROOT, Field.Kind.STRUCT, new ArrayList<>()));
+    }
 
-            void leaf(String name, Kind k, String v) {
-                stack.peek().add(new FieldTree(n(name), k, v, List.of()));
-            }
+    /** The body's fields as a struct named {@value #ROOT}. */
+    public static Field of(MessageBody body) {
+        FieldTree t = new FieldTree();
+        body.describe(t);
+        if (t.open.size() != 1) {
+            throw new IllegalStateException(body.getClass().getName() + " reports unbalanced structs or lists");
+        }
+        Open root = t.open.pop();
+        return new Field(root.name(), root.kind(), null, root.children());
+    }
 
-            public void integer(String name, long value) {
-                leaf(name, Kind.INTEGER, Long.toString(value));
-            }
+    private void add(String name, Field.Kind kind, Object value) {
+        open.peek().children().add(new Field(name, kind, value, List.of()));
+    }
 
-            public void float32(String name, float value) {
-                leaf(name, Kind.FLOAT, Float.toString(value));
-            }
+    @Override
+    public void integer(String name, long value) {
+        add(name, Field.Kind.INTEGER, value);
+    }
 
-            public void float64(String name, double value) {
-                leaf(name, Kind.FLOAT, Double.toString(value));
-            }
+    @Override
+    public void float32(String name, float value) {
+        add(name, Field.Kind.FLOAT32, value);
+    }
 
-            public void text(String name, String value) {
-                leaf(name, Kind.TEXT, value);
-            }
+    @Override
+    public void float64(String name, double value) {
+        add(name, Field.Kind.FLOAT64, value);
+    }
 
-            public void opaque(String name, byte[] value) {
-                leaf(name, Kind.OPAQUE, value.length + " bytes");
-            }
+    @Override
+    public void text(String name, String value) {
+        add(name, Field.Kind.TEXT, value);
+    }
 
-            public void beginStruct(String name) {
-                names.push(new String[] { n(name), "S" });
-                stack.push(new ArrayList<>());
-            }
+    @Override
+    public void opaque(String name, byte[] value) {
+        add(name, Field.Kind.OPAQUE, value.clone());
+    }
 
-            public void endStruct() {
-                end();
-            }
+    @Override
+    public void beginStruct(String name) {
+        open.push(new Open(name, Field.Kind.STRUCT, new ArrayList<>()));
+    }
 
-            public void beginList(String name) {
-                names.push(new String[] { n(name), "L" });
-                stack.push(new ArrayList<>());
-            }
+    @Override
+    public void endStruct() {
+        close(Field.Kind.STRUCT);
+    }
 
-            public void endList() {
-                end();
-            }
+    @Override
+    public void beginList(String name) {
+        open.push(new Open(name, Field.Kind.LIST, new ArrayList<>()));
+    }
 
-            void end() {
-                List<FieldTree> c = stack.pop();
-                String[] n = names.pop();
-                boolean list = n[1].equals("L");
-                stack.peek().add(new FieldTree(n[0], list ? Kind.LIST : Kind.STRUCT, list ? c.size() + " items" : "", List.copyOf(c)));
-            }
-        });
-        return new FieldTree("body", Kind.STRUCT, "", List.copyOf(stack.pop()));
+    @Override
+    public void endList() {
+        close(Field.Kind.LIST);
+    }
+
+    private void close(Field.Kind kind) {
+        if (open.size() < 2 || open.peek().kind() != kind) {
+            throw new IllegalStateException("end of " + kind + " without its beginning");
+        }
+        Open o = open.pop();
+        open.peek().children().add(new Field(o.name(), o.kind(), null, o.children()));
     }
 }

@@ -1,12 +1,14 @@
 package org.stagecraft.replay.ui.internal;
 
 import java.util.List;
+import java.util.Locale;
 
 import org.eclipse.jface.viewers.ITreeContentProvider;
 import org.stagecraft.player.codec.MessageBody;
+import org.stagecraft.replay.fields.Field;
 import org.stagecraft.replay.fields.FieldTree;
 
-/** Shows a decoded body's {@link FieldTree} in a tree viewer: the input is the body, rows are its fields. */
+/** Shows a decoded body's {@link FieldTree} in a tree viewer: the input is the root field, rows are its fields. */
 public final class FieldTreeContent implements ITreeContentProvider {
 
     /** The viewer's input for a body. */
@@ -16,12 +18,21 @@ public final class FieldTreeContent implements ITreeContentProvider {
 
     @Override
     public Object[] getElements(Object input) {
-        return input instanceof FieldTree t ? t.children().toArray() : new Object[0];
+        return getChildren(input);
     }
 
     @Override
     public Object[] getChildren(Object parent) {
-        return parent instanceof FieldTree t ? t.children().toArray() : new Object[0];
+        if (!(parent instanceof Field f)) {
+            return new Object[0];
+        }
+        // list elements have no name: show their index
+        Object[] out = new Object[f.children().size()];
+        for (int i = 0; i < out.length; i++) {
+            Field c = f.children().get(i);
+            out[i] = c.name() == null ? new Element(i, c) : c;
+        }
+        return out;
     }
 
     @Override
@@ -31,19 +42,45 @@ public final class FieldTreeContent implements ITreeContentProvider {
 
     @Override
     public boolean hasChildren(Object element) {
-        return element instanceof FieldTree t && !t.children().isEmpty();
+        Field f = field(element);
+        return f != null && !f.children().isEmpty();
+    }
+
+    /** A list element with its index. */
+    record Element(int index, Field field) {
+    }
+
+    private static Field field(Object element) {
+        return element instanceof Element e ? e.field() : element instanceof Field f ? f : null;
     }
 
     public static String name(Object element) {
-        return element instanceof FieldTree t ? t.name() : String.valueOf(element);
+        if (element instanceof Element e) {
+            return "[" + e.index() + "]";
+        }
+        return element instanceof Field f ? f.name() : String.valueOf(element);
     }
 
     public static String value(Object element) {
-        return element instanceof FieldTree t ? String.valueOf(t.value()) : "";
+        Field f = field(element);
+        if (f == null) {
+            return "";
+        }
+        return switch (f.kind()) {
+            case LIST -> f.children().size() + " elements";
+            case STRUCT -> "";
+            case TEXT -> "\"" + f.value() + "\"";
+            case OPAQUE -> ((byte[]) f.value()).length + " bytes";
+            case FLOAT32, FLOAT64, INTEGER -> String.valueOf(f.value());
+        } + kindSuffix(f);
+    }
+
+    private static String kindSuffix(Field f) {
+        return f.kind().numeric() ? "  (" + f.kind().name().toLowerCase(Locale.ROOT) + ")" : "";
     }
 
     /** Names of the top-level fields (tests). */
     public static List<String> topNames(Object input) {
-        return input instanceof FieldTree t ? t.children().stream().map(FieldTree::name).toList() : List.of();
+        return input instanceof Field f ? f.children().stream().map(c -> String.valueOf(c.name())).toList() : List.of();
     }
 }
