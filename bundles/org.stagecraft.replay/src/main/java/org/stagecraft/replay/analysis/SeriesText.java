@@ -21,7 +21,8 @@ public final class SeriesText {
         if (bar >= 0) {
             return parts(t.substring(0, bar), t.substring(bar + 1), text);
         }
-        int space = t.lastIndexOf(' ');
+        int paren = t.indexOf('(');
+        int space = paren >= 0 ? lastSpaceBefore(t, paren) : t.lastIndexOf(' ');
         if (space >= 0) {
             return parts(t.substring(0, space), t.substring(space + 1), text);
         }
@@ -31,6 +32,18 @@ public final class SeriesText {
         }
         throw new IllegalArgumentException("'" + t + "' names no field: write e.g. position2d.pos.px, "
                 + "ranger:1 min(ranges) or type=1 dev=4 | pos.px");
+    }
+
+    /** The space before the word holding {@code at}: an aggregate such as {@code mean( ranges )} may contain spaces. */
+    private static int lastSpaceBefore(String t, int at) {
+        int i = at - 1;
+        while (i >= 0 && t.charAt(i) == ' ') {
+            i--; // "mean (ranges)"
+        }
+        while (i >= 0 && t.charAt(i) != ' ') {
+            i--;
+        }
+        return i;
     }
 
     private static String[] parts(String stream, String path, String text) {

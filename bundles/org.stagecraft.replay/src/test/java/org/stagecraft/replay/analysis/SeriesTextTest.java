@@ -15,6 +15,8 @@ class SeriesTextTest {
     void threeWaysToWriteASeries() {
         assertArrayEquals(new String[] { "position2d", "pos.px" }, SeriesText.split("position2d.pos.px"));
         assertArrayEquals(new String[] { "ranger:1", "min(ranges)" }, SeriesText.split(" ranger:1  min(ranges) "));
+        assertArrayEquals(new String[] { "laser:0", "mean( ranges )" }, SeriesText.split("laser:0 mean( ranges )"));
+        assertArrayEquals(new String[] { "position2d:0 DATA", "pos.px" }, SeriesText.split("position2d:0 DATA pos.px"));
         assertArrayEquals(new String[] { "type=1 dev=4 index=*", "pos.px" }, SeriesText.split("type=1 dev=4 index=* | pos.px"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> SeriesText.split("position2d")).getMessage()
                 .contains("names no field"));

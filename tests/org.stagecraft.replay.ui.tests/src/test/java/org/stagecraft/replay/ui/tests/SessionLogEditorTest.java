@@ -1,0 +1,259 @@
+package org.stagecraft.replay.ui.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.LinkedBlockingQueue;
+
+import org.eclipse.core.filesystem.EFS;
+import org.eclipse.core.resources.IFile;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.widgets.Event;
+import org.eclipse.ui.IEditorPart;
+import org.eclipse.ui.IWorkbenchPage;
+import org.eclipse.ui.PlatformUI;
+import org.eclipse.ui.ide.IDE;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.stagecraft.core.streams.BusSources;
+import org.stagecraft.replay.analysis.InspectorRow;
+import org.stagecraft.replay.analysis.MessageWindow;
+import org.stagecraft.replay.log.LogCursor;
+import org.stagecraft.replay.log.LogFormat;
+import org.stagecraft.replay.log.LogMessage;
+import org.stagecraft.replay.log.LogProblem;
+import org.stagecraft.replay.ui.SessionLogEditor;
+import org.stagecraft.replay.ui.internal.FieldTreeContent;
+import org.stagecraft.streams.DeliveryPolicy;
+import org.stagecraft.streams.StreamMessage;
+import org.stagecraft.streams.StreamPattern;
+import org.stagecraft.streams.Subscription;
+
+/**
+ * The Session Log editor in a running workbench: a recorded trace and a spy log written by the spy's
+ * writer open with a track per stream; stepping publishes on the editor's own bus; an inspector row
+ * moves the replay; a cut-off log opens and says where it stopped. Runs on the UI thread; every wait
+ * spins the display until a condition holds.
+ */
+@Timeout(180)
+class SessionLogEditorTest {
+    private IWorkbenchPage page;
+
+    @BeforeEach
+    void page() {
+        page = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+    }
+
+    @AfterEach
+    void closeEditors() {
+        page.closeAllEditors(false);
+    }
+
+    static SessionLogEditor open(IWorkbenchPage page, IFile file) throws Exception {
+        IEditorPart e = IDE.openEditor(page, file, SessionLogEditor.ID, true);
+        assertTrue(e instanceof SessionLogEditor, "opened in the Session Log editor: " + e);
+        return (SessionLogEditor) e;
+    }
+
+    static void waitForTimeline(SessionLogEditor e) {
+        Ui.spinUntil(e::timelineComplete, 60_000, "the timeline's pass over the log");
+        Ui.spinUntil(() -> e.timeline().snapshot() != null
+                && e.timeline().snapshot().messages() > 0 && e.timelineComplete(), 10_000, "the timeline to show it");
+        Ui.drain();
+    }
+
+    static void waitForInspector(SessionLogEditor e) {
+        Ui.spinUntil(() -> !e.inspector().window().isEmpty(), 30_000, "the inspector's first window");
+    }
+
+    /** The first entry at or after {@code t} that the replay publishes, read straight from the log. */
+    private static LogMessage firstPublishedFrom(SessionLogEditor e, long t) throws Exception {
+        try (LogCursor c = e.log().cursor(t)) {
+            for (LogMessage m = c.next(); m != null; m = c.next()) {
+                if (m.toStreamMessage().isPresent()) {
+                    return m;
+                }
+            }
+        }
+        throw new AssertionError("nothing published after " + t);
+    }
+
+    @Test
+    void aRecordedTraceOpensWithATrackPerStream() throws Exception {
+        SessionLogEditor e = open(page, TestLogs.trace());
+        assertEquals(LogFormat.PLAYER_TRACE, e.log().format());
+        assertTrue(e.statusText().startsWith("Recorded trace, 3"), e.statusText());
+        waitForTimeline(e);
+        List<String> tracks = e.timeline().trackLabels();
+        assertTrue(tracks.contains("laser:0 DATA SCAN (#1 s2c)"), tracks.toString());
+        assertTrue(tracks.contains("position2d:0 DATA STATE (#1 s2c)"), tracks.toString());
+        assertTrue(tracks.contains("ranger:0 DATA RANGES (#1 s2c)") || tracks.stream().anyMatch(t -> t.startsWith("ranger:0 DATA")), tracks.toString());
+        assertTrue(tracks.size() >= 10, "streams: " + tracks);
+        assertTrue(BusSources.find(e.sourceId()).isPresent(), "the editor's bus is a source views can follow");
+        assertTrue(BusSources.find(e.sourceId()).get().bus() == e.bus());
+
+        page.closeEditor(e, false);
+        assertTrue(BusSources.find(e.sourceId()).isEmpty(), "gone with its editor");
+        assertTrue(e.bus().isClosed());
+    }
+
+    @Test
+    void aSpyLogOpensAndStepForwardPublishesTheNextMessageOnTheEditorsBus() throws Exception {
+        SessionLogEditor e = open(page, TestLogs.spyLog("session.mcap", 64 << 10));
+        assertEquals(LogFormat.SPY_LOG, e.log().format());
+        assertTrue(e.log().problems().isEmpty(), e.log().problems().toString());
+        waitForTimeline(e);
+        assertTrue(e.timeline().trackLabels().contains("laser:0 DATA SCAN (#1 s2c)"), e.timeline().trackLabels().toString());
+
+        LinkedBlockingQueue<StreamMessage> received = new LinkedBlockingQueue<>();
+        try (Subscription s = e.bus().subscribe(StreamPattern.any(), DeliveryPolicy.lossless(1 << 16), received::add)) {
+            // seek by typing a time, as a user does
+            var time = findText(e);
+            time.setText("10");
+            time.notifyListeners(SWT.DefaultSelection, new Event());
+            long ten = e.log().startNanos() + 10_000_000_000L;
+            assertEquals(ten, e.replayer().position());
+            LogMessage next = firstPublishedFrom(e, ten);
+            StreamMessage expected = next.toStreamMessage().orElseThrow();
+
+            int steps = entriesUpTo(e, ten, next);
+            for (int i = 0; i < steps; i++) {
+                Ui.press(e.transport().control(), "|\u25B6"); // events and banners first, if any: they publish nothing
+            }
+            Ui.spinUntil(() -> !received.isEmpty(), 5_000, "the step to publish");
+            StreamMessage got = received.poll();
+            assertNotNull(got, "a step published something");
+            assertEquals(expected.key(), got.key());
+            assertEquals(expected.timeNanos(), got.timeNanos());
+            assertEquals(next.timeNanos(), e.replayer().position());
+            Ui.spinUntil(() -> e.timeline().position() == next.timeNanos(), 5_000, "the timeline cursor to follow");
+            Ui.spinUntil(() -> e.transport().timeText().startsWith(String.format(java.util.Locale.ROOT, "%.3f",
+                    (next.timeNanos() - e.log().startNanos()) / 1e9)), 5_000, "the time field to follow: " + e.transport().timeText());
+
+            // and back: the same message again
+            received.clear();
+            Ui.press(e.transport().control(), "\u25C0|");
+            Ui.spinUntil(() -> !received.isEmpty(), 5_000, "step back to publish");
+            assertEquals(expected.key(), received.poll().key());
+        }
+    }
+
+    /** How many steps from {@code t} reach {@code m} (one per entry, published or not). */
+    private static int entriesUpTo(SessionLogEditor e, long t, LogMessage m) throws Exception {
+        int n = 0;
+        try (LogCursor c = e.log().cursor(t)) {
+            for (LogMessage x = c.next(); x != null; x = c.next()) {
+                n++;
+                if (x.samePlace(m)) {
+                    return n;
+                }
+            }
+        }
+        throw new AssertionError("not found");
+    }
+
+    private static org.eclipse.swt.widgets.Text findText(SessionLogEditor e) {
+        for (var c : e.transport().control().getChildren()) {
+            if (c instanceof org.eclipse.swt.widgets.Text t) {
+                return t;
+            }
+        }
+        throw new AssertionError("no time field");
+    }
+
+    @Test
+    void selectingAnInspectorRowMovesTheReplayThereAndShowsTheMessage() throws Exception {
+        SessionLogEditor e = open(page, TestLogs.spyLog("inspect.mcap", 64 << 10));
+        waitForInspector(e);
+        e.inspector().setFilter("position2d:0", "");
+        Ui.spinUntil(() -> !e.inspector().window().isEmpty() && e.inspector().filter().patternText().equals("position2d:0")
+                && e.inspector().window().rows().stream().allMatch(r -> e.columns().device(r.message()).equals("position2d:0")),
+                30_000, "the filtered window");
+        MessageWindow w = e.inspector().window();
+        assertTrue(w.rows().size() > 20, "rows: " + w.rows().size());
+        assertEquals(w.rows().size(), e.inspector().table().getItemCount(), "a virtual table of the window");
+
+        LinkedBlockingQueue<StreamMessage> received = new LinkedBlockingQueue<>();
+        try (Subscription s = e.bus().subscribe(StreamPattern.any(), DeliveryPolicy.lossless(1 << 16), received::add)) {
+            InspectorRow row = w.rows().get(15);
+            e.inspector().selectRow(15);
+            assertEquals(row.message().timeNanos(), e.replayer().position(), "the replay moved to the row");
+            Ui.spinUntil(() -> !received.isEmpty(), 5_000, "the row's message to be published");
+            StreamMessage got = received.poll();
+            assertEquals(row.message().toStreamMessage().orElseThrow().key(), got.key());
+            assertEquals(row.message().timeNanos(), got.timeNanos());
+        }
+        // its decoded fields and bytes are shown
+        Object input = e.inspector().fields().getInput();
+        assertEquals(List.of("pos", "vel", "stall"), FieldTreeContent.topNames(input));
+        assertTrue(e.inspector().hexText().startsWith("00000000  "), e.inspector().hexText());
+        assertEquals(e.inspector().detailed().bytes().length, countHexBytes(e.inspector().hexText()));
+        Ui.spinUntil(() -> e.timeline().position() == e.replayer().position(), 5_000, "the timeline cursor");
+        assertEquals(15, e.inspector().table().getSelectionIndex(), "the row stays selected");
+
+        // a filter that does not parse says why and keeps the rows
+        e.inspector().setFilter("dev=laser", "");
+        assertTrue(e.inspector().statusText().contains("dev=laser"), e.inspector().statusText());
+    }
+
+    private static int countHexBytes(String dump) {
+        int n = 0;
+        for (String line : dump.split("\n")) {
+            String hex = line.substring(10, Math.min(line.length(), 59));
+            n += hex.trim().isEmpty() ? 0 : hex.trim().split("\\s+").length;
+        }
+        return n;
+    }
+
+    @Test
+    void aTruncatedLogOpensWhatIsReadableAndSaysWhereItStopped() throws Exception {
+        IFile whole = TestLogs.spyLog("whole.mcap", 32 << 10);
+        Path cut = TestLogs.truncated(whole, 0.6);
+        try {
+            IEditorPart part = IDE.openEditorOnFileStore(page, EFS.getLocalFileSystem().getStore(cut.toUri()));
+            assertTrue(part instanceof SessionLogEditor, "an .mcap from outside the workspace opens in the Session Log editor: " + part);
+            SessionLogEditor e = (SessionLogEditor) part;
+            assertNotNull(e.log(), e.statusText());
+            List<LogProblem> problems = e.log().problems();
+            assertFalse(problems.isEmpty(), "the cut is reported");
+            String status = e.statusText();
+            assertTrue(status.startsWith("Spy log"), status);
+            assertTrue(status.contains(problems.get(0).where()), "the status says where: " + status);
+            waitForTimeline(e);
+            assertFalse(e.timeline().trackLabels().isEmpty(), "the readable part has its streams");
+            waitForInspector(e);
+            // it replays: a step publishes
+            LinkedBlockingQueue<StreamMessage> received = new LinkedBlockingQueue<>();
+            try (Subscription s = e.bus().subscribe(StreamPattern.any(), DeliveryPolicy.lossless(1 << 10), received::add)) {
+                e.replayer().seek(e.log().startNanos() + (e.log().endNanos() - e.log().startNanos()) / 2);
+                for (int i = 0; i < 20 && received.isEmpty(); i++) {
+                    e.replayer().stepForward();
+                }
+                Ui.spinUntil(() -> !received.isEmpty(), 5_000, "a replayed message from the readable part");
+            }
+            Optional<Long> stop = problems.stream().map(LogProblem::timeNanos).findFirst();
+            assertTrue(stop.isPresent());
+        } finally {
+            page.closeAllEditors(false);
+            Files.deleteIfExists(cut);
+        }
+    }
+
+    @Test
+    void aFileThatIsNoLogSaysSoInsteadOfFailing() throws Exception {
+        IFile junk = TestLogs.project().getFile("junk.mcap");
+        Files.writeString(junk.getLocation().toPath(), "this is not a spy log\n");
+        junk.refreshLocal(0, null);
+        SessionLogEditor e = open(page, junk);
+        assertTrue(e.log() == null, "nothing readable");
+        assertTrue(e.statusText().startsWith("Cannot open " + junk.getLocation().toPath()), e.statusText());
+    }
+}
