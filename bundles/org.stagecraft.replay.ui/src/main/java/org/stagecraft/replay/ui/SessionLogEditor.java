@@ -118,7 +118,11 @@ public class SessionLogEditor extends EditorPart {
         SashForm split = new SashForm(root, SWT.VERTICAL);
         split.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
         timeline = new TimelineCanvas(split, this::seek);
-        inspector = new InspectorPanel(split, columns, reader, this::inspectorSelected);
+        inspector = new InspectorPanel(split, columns, reader, () -> {
+            Replayer r = replayer;
+            SessionLog l = log;
+            return r != null ? r.position() : l != null ? l.startNanos() : 0;
+        }, this::inspectorSelected);
         split.setWeights(35, 65);
         updates = new UiThrottle(root.getDisplay(), 50, this::showReplayState);
         densityUpdates = new UiThrottle(root.getDisplay(), 250, this::showDensity);

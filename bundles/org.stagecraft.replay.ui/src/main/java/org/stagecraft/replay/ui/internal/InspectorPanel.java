@@ -47,6 +47,7 @@ public final class InspectorPanel {
     private final Text hex;
     private final ExecutorService reader;
     private final Consumer<LogMessage> onSelect;
+    private final java.util.function.LongSupplier replayPosition;
     private final AtomicLong generation = new AtomicLong();
     private final Color marked = new Color(255, 222, 222);
     private SessionLog log;
@@ -54,11 +55,16 @@ public final class InspectorPanel {
     private MessageFilter filter;
     private MessageWindow window = new MessageWindow(java.util.List.of(), 0, true, true);
     private boolean loading;
-    private long shownPosition = Long.MIN_VALUE;
     private LogMessage detailed;
 
-    public InspectorPanel(Composite parent, MessageColumns columns, ExecutorService reader, Consumer<LogMessage> onSelect) {
+    /**
+     * @param replayPosition where the replay is now (a new filter reads its window there)
+     * @param onSelect       told about a row the user chose
+     */
+    public InspectorPanel(Composite parent, MessageColumns columns, ExecutorService reader,
+            java.util.function.LongSupplier replayPosition, Consumer<LogMessage> onSelect) {
         this.columns = columns;
+        this.replayPosition = replayPosition;
         this.reader = reader;
         this.onSelect = onSelect;
         this.filter = MessageFilter.all(columns);
@@ -176,7 +182,7 @@ public final class InspectorPanel {
             status.getParent().layout();
             return;
         }
-        pageAround(shownPosition == Long.MIN_VALUE && log != null ? log.startNanos() : shownPosition, null);
+        pageAround(replayPosition.getAsLong(), null);
     }
 
     /**
@@ -184,7 +190,6 @@ public final class InspectorPanel {
      * new window when the position left the one held.
      */
     public void follow(long position, LogMessage last) {
-        shownPosition = position;
         if (log == null || loading) {
             return;
         }

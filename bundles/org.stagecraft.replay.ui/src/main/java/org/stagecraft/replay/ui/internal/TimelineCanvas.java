@@ -5,10 +5,8 @@ import java.util.Locale;
 import java.util.function.LongConsumer;
 
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.custom.ScrolledComposite;
 import org.eclipse.swt.graphics.Color;
 import org.eclipse.swt.graphics.GC;
-import org.eclipse.swt.graphics.Point;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
 import org.eclipse.swt.widgets.Composite;
@@ -25,7 +23,6 @@ import org.stagecraft.replay.analysis.TimelineDensity;
 public final class TimelineCanvas {
     public static final int LABEL_WIDTH = 240, AXIS = 18, MARKS = 10, ROW = 14;
 
-    private final ScrolledComposite scroll;
     private final Canvas canvas;
     private final LongConsumer onSeek;
     private TimelineDensity.Snapshot snapshot;
@@ -36,12 +33,15 @@ public final class TimelineCanvas {
 
     public TimelineCanvas(Composite parent, LongConsumer onSeek) {
         this.onSeek = onSeek;
-        scroll = new ScrolledComposite(parent, SWT.V_SCROLL | SWT.BORDER);
-        canvas = new Canvas(scroll, SWT.DOUBLE_BUFFERED | SWT.NO_BACKGROUND);
-        scroll.setContent(canvas);
-        scroll.setExpandHorizontal(true);
-        scroll.setExpandVertical(true);
-        scroll.addListener(SWT.Resize, e -> layout());
+        // its own scroll bar, not a ScrolledComposite: the axis and marks stay put while the tracks scroll
+        canvas = new Canvas(parent, SWT.DOUBLE_BUFFERED | SWT.NO_BACKGROUND | SWT.V_SCROLL | SWT.BORDER);
+        canvas.addListener(SWT.Resize, e -> layout());
+        canvas.getVerticalBar().addListener(SWT.Selection, e -> canvas.redraw());
+        canvas.addListener(SWT.MouseVerticalWheel, e -> {
+            var bar = canvas.getVerticalBar();
+            bar.setSelection(Math.max(0, Math.min(bar.getMaximum() - bar.getThumb(), bar.getSelection() - e.count * ROW)));
+            canvas.redraw();
+        });
         canvas.addListener(SWT.Paint, e -> paint(e.gc));
         canvas.addListener(SWT.MouseDown, e -> {
             if (e.button == 1 && e.x >= LABEL_WIDTH) {
@@ -57,8 +57,8 @@ public final class TimelineCanvas {
         canvas.addListener(SWT.MouseUp, e -> dragging = false);
     }
 
-    public ScrolledComposite control() {
-        return scroll;
+    public Canvas control() {
+        return canvas;
     }
 
     public Canvas canvas() {
@@ -126,7 +126,13 @@ public final class TimelineCanvas {
 
     private void layout() {
         int rows = snapshot == null ? 0 : snapshot.tracks().size();
-        scroll.setMinSize(new Point(LABEL_WIDTH + 100, AXIS + MARKS + rows * ROW + 4));
+        int visible = Math.max(1, canvas.getClientArea().height - AXIS - MARKS);
+        var bar = canvas.getVerticalBar();
+        bar.setMaximum(Math.max(rows * ROW + 4, 1));
+        bar.setThumb(Math.min(visible, bar.getMaximum()));
+        bar.setPageIncrement(visible);
+        bar.setIncrement(ROW);
+        bar.setVisible(rows * ROW + 4 > visible);
     }
 
     private void paint(GC gc) {
@@ -215,17 +221,25 @@ public final class TimelineCanvas {
     private void drawTracks(GC gc, int right) {
         var display = canvas.getDisplay();
         Color bar = new Color(48, 96, 192), stripe = new Color(244, 246, 250);
-        int y = AXIS + MARKS;
+        int top = AXIS + MARKS;
+        int y = top - canvas.getVerticalBar().getSelection();
+        int bottom = canvas.getClientArea().height;
         int i = 0;
         for (TimelineDensity.Track t : snapshot.tracks()) {
+            if (y + ROW <= top || y >= bottom) {
+                y += ROW;
+                i++;
+                continue;
+            }
+            gc.setClipping(0, top, right + 4, bottom - top);
             if (i++ % 2 == 1) {
                 gc.setBackground(stripe);
                 gc.fillRectangle(0, y, right, ROW);
             }
             gc.setForeground(display.getSystemColor(SWT.COLOR_BLACK));
-            gc.setClipping(0, y, LABEL_WIDTH - 4, ROW);
+            gc.setClipping(new Rectangle(0, y, LABEL_WIDTH - 4, ROW).intersection(new Rectangle(0, top, right, bottom - top)));
             gc.drawString(t.label(), 4, y, true);
-            gc.setClipping((Rectangle) null);
+            gc.setClipping(0, top, right + 4, bottom - top);
             int max = t.max();
             gc.setBackground(bar);
             for (int b = 0; b < t.counts().length; b++) {
@@ -240,5 +254,6 @@ public final class TimelineCanvas {
             }
             y += ROW;
         }
+        gc.setClipping((Rectangle) null);
     }
 }

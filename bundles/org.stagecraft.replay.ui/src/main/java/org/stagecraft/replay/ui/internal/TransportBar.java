@@ -3,8 +3,8 @@ package org.stagecraft.replay.ui.internal;
 import java.util.Locale;
 
 import org.eclipse.swt.SWT;
-import org.eclipse.swt.layout.GridData;
-import org.eclipse.swt.layout.GridLayout;
+import org.eclipse.swt.layout.RowData;
+import org.eclipse.swt.layout.RowLayout;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
@@ -52,13 +52,15 @@ public final class TransportBar {
 
     public TransportBar(Composite parent, Host host) {
         root = new Composite(parent, SWT.NONE);
-        GridLayout layout = new GridLayout(13, false);
-        layout.marginHeight = 2;
+        RowLayout layout = new RowLayout(SWT.HORIZONTAL);
+        layout.wrap = true; // a narrow editor gets two rows rather than hidden controls
+        layout.center = true;
+        layout.marginTop = layout.marginBottom = 2;
         root.setLayout(layout);
         button("\u23EE", "To the start", host::toStart);
         button("\u25C0|", "Step back one message (publishes it again)", host::stepBack);
         play = button("\u25B6 Play", "Play / pause", host::playPause);
-        play.setLayoutData(new GridData(80, SWT.DEFAULT));
+        play.setLayoutData(new RowData(90, SWT.DEFAULT));
         button("|\u25B6", "Step forward one message (publishes it)", host::stepForward);
         new Label(root, SWT.NONE).setText(" Speed:");
         speed = new Combo(root, SWT.READ_ONLY | SWT.DROP_DOWN);
@@ -69,7 +71,7 @@ public final class TransportBar {
         speed.addListener(SWT.Selection, e -> host.speed(SPEEDS[speed.getSelectionIndex()]));
         new Label(root, SWT.NONE).setText(" Time:");
         time = new Text(root, SWT.BORDER | SWT.RIGHT);
-        time.setLayoutData(new GridData(90, SWT.DEFAULT));
+        time.setLayoutData(new RowData(90, SWT.DEFAULT));
         time.setToolTipText("Seconds after the start of the log; Enter seeks");
         time.addListener(SWT.FocusIn, e -> editingTime = true);
         time.addListener(SWT.FocusOut, e -> editingTime = false);
@@ -121,6 +123,7 @@ public final class TransportBar {
             }
         }
         root.layout();
+        root.getParent().layout();
     }
 
     public String timeText() {

@@ -34,6 +34,14 @@ class EditorScreenshotTest {
         IWorkbenchPage page = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
         Shell shell = page.getWorkbenchWindow().getShell();
         shell.setBounds(0, 0, 1280, 1024);
+        // room for the editor: the explorer and the outline have nothing to say here
+        for (String id : new String[] { org.eclipse.ui.IPageLayout.ID_PROJECT_EXPLORER, org.eclipse.ui.IPageLayout.ID_OUTLINE,
+                RobotView.ID }) { // the perspective's Robot View follows Live: nothing to show here
+            var v = page.findView(id);
+            if (v != null) {
+                page.hideView(v);
+            }
+        }
         try {
             SessionLogEditor e = SessionLogEditorTest.open(page, TestLogs.trace());
             SessionLogEditorTest.waitForTimeline(e);
@@ -52,13 +60,18 @@ class EditorScreenshotTest {
             Ui.spinUntil(() -> e.replayer().position() >= twelve, 30_000, "the replay to reach 12 s");
             e.replayer().pause();
             e.inspector().setFilter("laser:0", "");
-            Ui.spinUntil(() -> !e.inspector().window().isEmpty() && e.inspector().filter().patternText().equals("laser:0"),
+            Ui.spinUntil(() -> !e.inspector().window().isEmpty()
+                    && e.inspector().window().rows().stream().allMatch(r -> e.columns().device(r.message()).equals("laser:0")),
                     30_000, "the laser rows");
             int row = Math.min(e.inspector().window().anchorIndex(), e.inspector().window().rows().size() - 1);
             e.inspector().selectRow(Math.max(0, row - 1));
             Ui.spinUntil(() -> !plot.sampling() && plot.series().size() == 3, 30_000, "the plot");
-            Ui.spinUntil(() -> view.frames() > 0 && view.scene().world().robots().stream().anyMatch(r -> r.poseSeen()), 30_000,
-                    "the Robot View to draw the robot");
+            Ui.spinUntil(() -> e.inspector().statusText().contains("entries"), 30_000, "the inspector to settle");
+            Ui.spinUntil(() -> view.scene().world().robots().stream().anyMatch(r -> r.poseSeen()), 30_000,
+                    "the Robot View's world to see the robot: " + view.scene().world().robots());
+            page.bringToTop(view);
+            page.bringToTop(plot);
+            Ui.spinUntil(() -> view.frames() > 0, 30_000, "the Robot View to draw");
             view.requestRedraw();
             Ui.drain();
 

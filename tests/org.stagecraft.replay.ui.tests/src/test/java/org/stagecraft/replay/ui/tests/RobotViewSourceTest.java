@@ -54,8 +54,8 @@ class RobotViewSourceTest {
                 30_000, "the replayed robot and its laser in the view");
         Ui.spinUntil(() -> view.frames() > framesBefore, 10_000, "the view to redraw with the replayed data");
         RobotState first = view.scene().world().robot(robot);
-        assertEquals(16, view.scene().world().mount(new org.stagecraft.scene.DeviceAddress(robot, 62, 0)).elements().size(),
-                "the sonar geometry came from the log");
+        Ui.spinUntil(() -> view.scene().world().mount(new org.stagecraft.scene.DeviceAddress(robot, 62, 0)).elements().size() == 16,
+                10_000, "the sonar geometry (16 transducers) from the log's GET_GEOM reply");
         Ui.spinUntil(() -> !view.scene().world().robot(robot).pose().equals(first.pose()), 30_000, "the robot to move");
         e.replayer().pause();
         assertTrue(WorkbenchBus.get() != e.bus());
