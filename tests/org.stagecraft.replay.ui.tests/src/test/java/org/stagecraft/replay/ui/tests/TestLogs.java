@@ -80,24 +80,54 @@ final class TestLogs {
 
     /** Frames the trace's byte streams and logs every event the way the spy does. */
     private static void write(Path trace, SpyLogWriter log) throws IOException {
-        SessionFramer framer = new SessionFramer(e -> {
-            try {
-                log.wire(nanos(e.t()), e.stream().conn(), e.stream().port(), e.stream().dir(), e.event());
-            } catch (IOException ex) {
-                throw new UncheckedIOException(ex);
-            }
-        });
-        double last = 0;
-        try (TraceReader reader = new TraceReader(trace)) {
-            for (TraceRecord r = reader.next(); r != null; r = reader.next()) {
+        try (Feeder f = new Feeder(trace, log)) {
+            f.writeUntil(Double.MAX_VALUE);
+        }
+    }
+
+    /**
+     * Writes a trace into a spy log step by step, as a running spy would: {@link #writeUntil} logs the
+     * recording up to a time, so a test can open the log while it grows.
+     */
+    static final class Feeder implements AutoCloseable {
+        private final TraceReader reader;
+        private final SpyLogWriter log;
+        private final SessionFramer framer;
+        private TraceRecord pending;
+        private double last;
+
+        Feeder(Path trace, SpyLogWriter log) throws IOException {
+            this.reader = new TraceReader(trace);
+            this.log = log;
+            this.framer = new SessionFramer(e -> {
+                try {
+                    log.wire(nanos(e.t()), e.stream().conn(), e.stream().port(), e.stream().dir(), e.event());
+                } catch (IOException ex) {
+                    throw new UncheckedIOException(ex);
+                }
+            });
+        }
+
+        /** Logs every record up to {@code seconds} (trace time); false when the trace is used up. */
+        boolean writeUntil(double seconds) throws IOException {
+            for (TraceRecord r = pending != null ? pending : reader.next(); r != null; r = reader.next()) {
+                pending = null;
                 switch (r) {
                     case TraceRecord.Header h -> {
                     }
                     case TraceRecord.Chunk c -> {
+                        if (c.t() > seconds) {
+                            pending = r;
+                            return true;
+                        }
                         last = c.t();
                         framer.chunk(c.t(), c.stream(), c.data());
                     }
                     case TraceRecord.Lifecycle l -> {
+                        if (l.t() > seconds) {
+                            pending = r;
+                            return true;
+                        }
                         last = l.t();
                         if (l.isClose()) {
                             framer.close(l.t(), l.conn());
@@ -109,7 +139,13 @@ final class TestLogs {
                     }
                 }
             }
+            return false;
         }
-        framer.endAll(last);
+
+        @Override
+        public void close() throws IOException {
+            framer.endAll(last);
+            reader.close();
+        }
     }
 }
