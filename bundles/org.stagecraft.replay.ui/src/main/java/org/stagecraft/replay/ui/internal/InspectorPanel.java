@@ -207,6 +207,7 @@ public final class InspectorPanel {
         int i = window.indexOf(last);
         if (i >= 0) {
             table.setSelection(i);
+            table.showSelection();
             showDetails(last);
         } else {
             table.deselectAll();
