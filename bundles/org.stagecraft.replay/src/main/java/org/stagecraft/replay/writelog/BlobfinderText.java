@@ -26,7 +26,7 @@ final class BlobfinderText implements PayloadText {
     }
 
     @Override
-    public MessageBody read(int type, int subtype, Tokens in) throws WritelogSyntaxException {
+    public MessageBody read(int type, int subtype, Tokens in, LineNote note) throws WritelogSyntaxException {
         if (type != DATA) {
             throw PayloadText.unknown("blobfinder", type, subtype);
         }

@@ -42,7 +42,7 @@ final class BumperText implements PayloadText {
     }
 
     @Override
-    public MessageBody read(int type, int subtype, Tokens in) throws WritelogSyntaxException {
+    public MessageBody read(int type, int subtype, Tokens in, LineNote note) throws WritelogSyntaxException {
         if (type == DATA && subtype == 1) {
             int n = in.count("bumpers_count", 1);
             byte[] b = new byte[n];

@@ -44,7 +44,7 @@ final class FiducialText implements PayloadText {
     }
 
     @Override
-    public MessageBody read(int type, int subtype, Tokens in) throws WritelogSyntaxException {
+    public MessageBody read(int type, int subtype, Tokens in, LineNote note) throws WritelogSyntaxException {
         if (type == DATA && subtype == 1) {
             int n = in.count("fiducials_count", 13);
             List<Fiducial.Item> items = new ArrayList<>(n);

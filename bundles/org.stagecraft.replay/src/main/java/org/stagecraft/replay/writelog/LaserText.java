@@ -8,7 +8,8 @@ import org.stagecraft.player.msg.Laser;
 
 /**
  * laser: scans (1:1), scans with a pose (1:2) and the geometry reply (4:1). Each range is followed by
- * its intensity, so a scan re-read always has as many intensities as ranges (zeros where it had none).
+ * its intensity (zero where the scan has none), so readlog always has as many intensities as ranges;
+ * see {@link LineNote} for how Stagecraft's own files keep a scan without intensities exact.
  * Scans with explicit angles (1:3) are skipped: writelog writes them but readlog cannot read them.
  */
 final class LaserText implements PayloadText {
@@ -28,6 +29,13 @@ final class LaserText implements PayloadText {
             return "Player's readlog cannot read laser scans with angles (SCANANGLE)";
         }
         return "writelog writes only laser scans and geometry";
+    }
+
+    @Override
+    public LineNote noteFor(MessageBody body) {
+        Laser.Scan s = body instanceof Laser.ScanPose p ? p.scan() : body instanceof Laser.Scan l ? l : null;
+        return s != null && s.intensityCount() == 0 && s.intensity().size() == 0 && s.ranges().size() > 0
+                ? LineNote.NO_INTENSITIES : LineNote.NONE;
     }
 
     @Override
@@ -57,15 +65,15 @@ final class LaserText implements PayloadText {
     }
 
     @Override
-    public MessageBody read(int type, int subtype, Tokens in) throws WritelogSyntaxException {
+    public MessageBody read(int type, int subtype, Tokens in, LineNote note) throws WritelogSyntaxException {
         if (type == DATA && subtype == 1) {
             int id = in.int32("scan id");
-            return scan(in, id);
+            return scan(in, id, note);
         }
         if (type == DATA && subtype == 2) {
             int id = in.int32("scan id");
             var pose = TextGeometry.pose2d(in);
-            return new Laser.ScanPose(scan(in, id), pose);
+            return new Laser.ScanPose(scan(in, id, note), pose);
         }
         if (type == RESP_ACK && subtype == 1) {
             return TextGeometry.planarGeom(in);
@@ -73,7 +81,7 @@ final class LaserText implements PayloadText {
         throw PayloadText.unknown("laser", type, subtype);
     }
 
-    private static Laser.Scan scan(Tokens in, int id) throws WritelogSyntaxException {
+    private static Laser.Scan scan(Tokens in, int id, LineNote note) throws WritelogSyntaxException {
         float min = in.float32("min_angle");
         float max = in.float32("max_angle");
         float res = in.float32("resolution");
@@ -85,6 +93,17 @@ final class LaserText implements PayloadText {
             ranges[i] = in.float32("range " + i);
             intensity[i] = (byte) in.int32("intensity " + i);
         }
-        return new Laser.Scan(min, max, res, maxRange, n, FloatArray.of(ranges), n, ByteArray.of(intensity), id);
+        boolean none = note == LineNote.NO_INTENSITIES && allZero(intensity);
+        return new Laser.Scan(min, max, res, maxRange, n, FloatArray.of(ranges), none ? 0 : n,
+                none ? ByteArray.EMPTY : ByteArray.of(intensity), id);
+    }
+
+    private static boolean allZero(byte[] b) {
+        for (byte x : b) {
+            if (x != 0) {
+                return false;
+            }
+        }
+        return true;
     }
 }

@@ -30,7 +30,7 @@ final class PositionText implements PayloadText {
     }
 
     @Override
-    public MessageBody read(int type, int subtype, Tokens in) throws WritelogSyntaxException {
+    public MessageBody read(int type, int subtype, Tokens in, LineNote note) throws WritelogSyntaxException {
         if (type == DATA && subtype == 1) {
             return new Position2d.State(TextGeometry.pose2d(in), TextGeometry.pose2d(in), in.int32("stall") & 0xFF);
         }

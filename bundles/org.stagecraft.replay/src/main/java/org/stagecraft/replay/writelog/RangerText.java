@@ -69,7 +69,7 @@ final class RangerText implements PayloadText {
     }
 
     @Override
-    public MessageBody read(int type, int subtype, Tokens in) throws WritelogSyntaxException {
+    public MessageBody read(int type, int subtype, Tokens in, LineNote note) throws WritelogSyntaxException {
         if (type == DATA && (subtype == 1 || subtype == 3)) {
             return values(in, subtype == 1 ? "ranges" : "intensities");
         }

@@ -39,7 +39,7 @@ final class SonarText implements PayloadText {
     }
 
     @Override
-    public MessageBody read(int type, int subtype, Tokens in) throws WritelogSyntaxException {
+    public MessageBody read(int type, int subtype, Tokens in, LineNote note) throws WritelogSyntaxException {
         if (type == DATA && subtype == 1) {
             int n = in.count("ranges_count", 1);
             float[] r = new float[n];

@@ -34,6 +34,7 @@ public final class WritelogReader implements Closeable {
     private String playerVersion;
     private String fileVersion;
     private boolean stopped;
+    private LineNote note = LineNote.NONE;
 
     public WritelogReader(Path file) throws IOException {
         this(file.toString(), Files.newBufferedReader(file, StandardCharsets.ISO_8859_1));
@@ -58,15 +59,23 @@ public final class WritelogReader implements Closeable {
             }
             line++;
             List<String> tokens = split(text);
-            if (tokens.isEmpty() || tokens.get(0).equals("#")) {
+            if (tokens.isEmpty()) {
+                continue;
+            }
+            if (tokens.get(0).equals("#")) {
+                if (tokens.size() > 2 && tokens.get(1).equals(LineNote.PREFIX)) {
+                    note = LineNote.of(tokens.get(2));
+                }
                 continue;
             }
             if (tokens.get(0).equals("##")) {
                 metadata(tokens);
                 continue;
             }
+            LineNote thisLine = note;
+            note = LineNote.NONE;
             try {
-                WritelogRecord r = record(tokens);
+                WritelogRecord r = record(tokens, thisLine);
                 lastNanos = nanos(r.time());
                 return r;
             } catch (WritelogSyntaxException e) {
@@ -118,7 +127,7 @@ public final class WritelogReader implements Closeable {
         }
     }
 
-    private WritelogRecord record(List<String> t) throws WritelogSyntaxException {
+    private WritelogRecord record(List<String> t, LineNote lineNote) throws WritelogSyntaxException {
         if (t.size() < HEADER_VALUES) {
             throw new WritelogSyntaxException("only " + t.size() + " values; a message line starts with "
                     + "time host robot interface index type subtype");
@@ -142,7 +151,7 @@ public final class WritelogReader implements Closeable {
         Tokens in = new Tokens(unglue(t), HEADER_VALUES);
         MessageBody body;
         try {
-            body = payload.read(type, subtype, in);
+            body = payload.read(type, subtype, in, lineNote);
             in.expectEnd();
         } catch (WritelogSyntaxException e) {
             throw new WritelogSyntaxException(iface + " " + type + ":" + subtype + ": " + e.getMessage());

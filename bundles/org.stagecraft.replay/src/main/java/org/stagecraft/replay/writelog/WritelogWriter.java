@@ -109,12 +109,16 @@ public final class WritelogWriter {
             return false;
         }
         line.setLength(0);
+        LineNote note = text.noteFor(body);
+        if (note != LineNote.NONE) {
+            line.append(note.line());
+        }
         line.append(NumberText.float64(h.timestamp())).append(' ').append(Integer.toUnsignedString(h.host()))
                 .append(' ').append(Integer.toUnsignedString(h.robot())).append(' ').append(iface).append(' ')
                 .append(h.index()).append(' ').append(h.type()).append(' ').append(h.subtype());
         int payloadStart = line.length();
         text.write(h.type(), h.subtype(), body, new TextOut(line));
-        if (!readsBackExactly(text, h, payload, line.substring(payloadStart))) {
+        if (!readsBackExactly(text, h, payload, line.substring(payloadStart), note)) {
             approximated++;
         }
         line.append('\n');
@@ -149,10 +153,11 @@ public final class WritelogWriter {
         return false;
     }
 
-    private static boolean readsBackExactly(PayloadText text, MessageHeader h, byte[] payload, String written) {
+    private static boolean readsBackExactly(PayloadText text, MessageHeader h, byte[] payload, String written,
+            LineNote note) {
         try {
             Tokens in = new Tokens(WritelogReader.split(written), 0);
-            MessageBody back = text.read(h.type(), h.subtype(), in);
+            MessageBody back = text.read(h.type(), h.subtype(), in, note);
             return in.atEnd() && Arrays.equals(payload, PlayerEncoder.encodeBody(back));
         } catch (WritelogSyntaxException e) {
             throw new IllegalStateException("writelog text written for " + h + " does not read back: " + e.getMessage(), e);
