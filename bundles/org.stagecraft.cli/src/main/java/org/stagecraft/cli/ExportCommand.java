@@ -110,7 +110,7 @@ final class ExportCommand {
                         err.println("stagecraft export: " + s.written() + " lines" + (outFile != null ? " to " + outFile : "")
                                 + (s.approximated() > 0 ? ", " + s.approximated() + " of them with less than they hold"
                                         + " (writelog keeps only part of some geometry)" : "")
-                                + (s.duplicates() > 0 ? ", " + s.duplicates() + " copies other clients received left out" : ""));
+                                + (s.duplicates() > 0 ? ", " + s.duplicates() + " repeats of a message already written left out" : ""));
                         for (Map.Entry<String, Long> e : s.skipped().entrySet()) {
                             err.println("  skipped " + e.getValue() + " x " + e.getKey());
                         }

@@ -26,7 +26,9 @@ import org.stagecraft.replay.log.LogMessage;
  * <p>What writelog cannot express is skipped and counted by reason: client messages (writelog logs
  * what devices publish), requests, other replies, interfaces without writelog text. Some kinds are
  * written with less than they hold (e.g. a laser geometry keeps x, y, yaw, length and width only);
- * those are counted as approximated. A message that several clients received is written once.
+ * those are counted as approximated. A message written once is not written again when it comes
+ * again (same device, timestamp and payload: Player resends unchanged data in PULL mode, and several
+ * clients receive the same data), as writelog logs each publication once.
  */
 public final class WritelogWriter {
     private static final int RECENT = 32;
