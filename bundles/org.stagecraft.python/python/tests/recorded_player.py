@@ -59,6 +59,8 @@ class Recording:
     replies: dict[tuple[object, ...], list[list[Message]]] = field(default_factory=lambda: defaultdict(list))
     rounds: list[Round] = field(default_factory=list)
     pushed: list[Message] = field(default_factory=list)
+    #: the devices the recorded client subscribed to (interf, index)
+    devices: set[tuple[int, int]] = field(default_factory=set)
 
     @staticmethod
     def load(path: Path, conn: int = 1) -> Recording:
@@ -78,6 +80,8 @@ class Recording:
             if e.dir == "c2s":
                 if h.type == MsgType.REQ:
                     pending.append((request_key(h, e.message.body), h))
+                    if h.interf == PLAYER and h.subtype == REQ_DEV and XdrReader(e.message.body[16:]).uint32() == 1:
+                        self.devices.add((XdrReader(e.message.body[8:]).uint32(), XdrReader(e.message.body[12:]).uint32()))
                     if h.interf == PLAYER and h.subtype == REQ_DATAMODE:
                         push = XdrReader(e.message.body).uint32() == 1
                 continue
@@ -179,7 +183,10 @@ class RecordedPlayer:
         self._send(conn, self.recording.banner, writer)
         push = False
         while not self._stop.is_set():
-            streaming = push and self.pushed_sent < len(self.recording.pushed)
+            # PUSH data flows once the client has subscribed what the recorded client had (as the
+            # recorded stream holds those devices' data from the start), so every run sees all of it
+            streaming = (push and self.pushed_sent < len(self.recording.pushed)
+                         and self.subscribed >= self.recording.devices)
             ready, _, _ = select.select([conn], [], [], 0 if streaming else 0.05)
             if ready:
                 chunk = conn.recv(65536)

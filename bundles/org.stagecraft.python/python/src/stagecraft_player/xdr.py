@@ -66,13 +66,13 @@ class XdrWriter:
 
     def floats(self, values: Sequence[float]) -> XdrWriter:
         """``foo_count`` then xdr_array of floats (the count twice)."""
-        self.uint32(len(values)).uint(len(values))
+        self.uint32(len(values)).uint32(len(values))
         for v in values:
             self.float32(v)
         return self
 
     def doubles(self, values: Sequence[float]) -> XdrWriter:
-        self.uint32(len(values)).uint(len(values))
+        self.uint32(len(values)).uint32(len(values))
         for v in values:
             self.float64(v)
         return self
