@@ -16,7 +16,7 @@ import argparse
 import math
 from dataclasses import dataclass
 
-from stagecraft_player import Client, LaserScan, PlayerError, deg, m, s, to_si
+from stagecraft_player import Client, LaserScan, PlayerError, RequestRefused, deg, m, s, to_si
 
 #: Beyond this an object is not interesting (also: a beam at the laser's maximum hit nothing).
 MAX_INTERESTING_RANGE = 3.0 * m
@@ -73,7 +73,10 @@ def main(argv: list[str] | None = None) -> int:
         with Client(args.host, args.port) as client:
             robot = client.position2d(args.position)
             laser = client.laser(args.laser)
-            mount_yaw = laser.get_geometry().pose.pyaw
+            try:
+                mount_yaw = laser.get_geometry().pose.pyaw
+            except RequestRefused:
+                mount_yaw = 0.0  # a driver without geometry: assume the laser looks ahead
             robot.enable_motors(True)
             print(f"laser sentinel: watching {laser.address} ({laser.driver}) up to {args.max_range} m", flush=True)
             rounds = 0
