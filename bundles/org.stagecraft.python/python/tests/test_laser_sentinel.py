@@ -76,6 +76,7 @@ def test_turning_is_smooth_limited_and_stops_when_facing() -> None:
 def test_the_program_faces_the_nearest_object_against_the_test_player(serve) -> None:
     server = serve("pioneer-laser-sonar.gt", rounds=20)
     assert sentinel.main(["--host", "127.0.0.1", "--port", str(server.port), "--rounds", "20"]) == 0
+    assert server.wait_until_served(10), "the server saw the program close its connection"
     assert server.unanswered == []
     commands = [m for m in server.received if (m.header.interf, m.header.type, m.header.subtype) == (4, 2, 1)]
     assert len(commands) == 21  # one per round, and the stop at the end

@@ -19,7 +19,7 @@ from .errors import UnitError
 
 #: The registry every quantity of this library lives in. Robot programs use its units (or these
 #: shortcuts); quantities from another registry are refused by pint when mixed.
-ureg: pint.UnitRegistry = pint.UnitRegistry()
+ureg: pint.UnitRegistry[Any] = pint.UnitRegistry()
 Quantity = ureg.Quantity
 
 m = ureg.metre

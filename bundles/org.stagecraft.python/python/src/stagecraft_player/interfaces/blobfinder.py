@@ -30,8 +30,9 @@ class Blob(_WithUnits):
 
     @staticmethod
     def read(r: XdrReader) -> Blob:
-        ints = [r.uint32() for _ in range(9)]
-        return Blob(*ints, r.float32())
+        blob_id, color, area, x, y = r.uint32(), r.uint32(), r.uint32(), r.uint32(), r.uint32()
+        left, right, top, bottom = r.uint32(), r.uint32(), r.uint32(), r.uint32()
+        return Blob(blob_id, color, area, x, y, left, right, top, bottom, r.float32())
 
 
 @dataclass(frozen=True)

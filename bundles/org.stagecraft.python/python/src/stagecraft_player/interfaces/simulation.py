@@ -58,8 +58,13 @@ class Simulation(Proxy):
         self._request(REQ_SET_PROPERTY, body.to_bytes())
 
     def get_color(self, name: str) -> tuple[float, float, float, float]:
-        """Stage's "color" property: red, green, blue, alpha in 0..1 (4 floats, the simulator's byte order)."""
-        return struct.unpack("<4f", self.get_property(name, "color", 16))  # type: ignore[return-value]
+        """Stage's "color" property: red, green, blue, alpha in 0..1.
+
+        Player passes property values as the simulator's raw memory: 4 floats in its byte order,
+        taken here to be little-endian (x86, ARM).
+        """
+        red, green, blue, alpha = struct.unpack("<4f", self.get_property(name, "color", 16))
+        return red, green, blue, alpha
 
     def set_color(self, name: str, red: float, green: float, blue: float, alpha: float = 1.0) -> None:
         self.set_property(name, "color", struct.pack("<4f", red, green, blue, alpha))
