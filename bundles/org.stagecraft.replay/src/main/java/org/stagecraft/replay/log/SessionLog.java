@@ -24,6 +24,9 @@ public interface SessionLog extends AutoCloseable {
     /** Log time of the last message. */
     long endNanos();
 
+    /** Wire entries in the log (banners, Player messages, unframed pieces), from its index; events not counted. */
+    long messageCount();
+
     /** The connections the log knows, in connection-number order. */
     List<ConnectionInfo> connections();
 

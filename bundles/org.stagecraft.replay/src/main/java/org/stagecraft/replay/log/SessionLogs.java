@@ -1,23 +1,100 @@
 package org.stagecraft.replay.log;
 
 import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+
+import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.recording.trace.TraceReader;
+import org.stagecraft.replay.writelog.WritelogImport;
+import org.stagecraft.spy.log.SpyLogReader;
+import org.stagecraft.spy.log.SpyLogWriter;
 
 /**
  * Opens any log a user can give: a spy log, a recorded trace or a Player writelog file, recognised
- * by content rather than by name.
+ * by content rather than by name. A spy log is read in place through its index. A trace or writelog
+ * file is first written into a temporary spy log (deleted on close), so every log is replayed,
+ * sought and inspected by the same code, with memory flat in the log's size.
  */
 public final class SessionLogs {
+    private static final int HEAD = 512;
+
     private SessionLogs() {
     }
 
     /**
-     * Opens {@code file}. A truncated or partly corrupt file opens with what is readable and says
-     * where it stopped in {@link SessionLog#problems()}.
+     * Opens {@code file}, decoding with Player's standard interfaces. A truncated or partly corrupt
+     * file opens with what is readable and says where it stopped in {@link SessionLog#problems()}.
      *
      * @throws IOException naming the file when it cannot be read or is none of the known formats
      */
     public static SessionLog open(Path file) throws IOException {
-        throw new UnsupportedOperationException("not built yet");
+        return open(file, CodecRegistry.standard());
+    }
+
+    /** As {@link #open(Path)}, decoding with {@code codecs} (e.g. with interfaces plug-ins add). */
+    public static SessionLog open(Path file, CodecRegistry codecs) throws IOException {
+        LogFormat format = formatOf(file);
+        return switch (format) {
+            case SPY_LOG -> new SpyLogSession(file, format, SpyLogReader.open(file), codecs, List.of(), () -> {
+            });
+            case PLAYER_TRACE -> imported(file, format, codecs, TraceImport.metadata(file),
+                    out -> TraceImport.convert(file, out));
+            case WRITELOG -> imported(file, format, codecs, Map.of("imported-from", file.toString(), "format", "writelog"),
+                    out -> WritelogImport.convert(file, out));
+        };
+    }
+
+    /** What {@code file} holds, told by its first bytes. */
+    public static LogFormat formatOf(Path file) throws IOException {
+        byte[] head;
+        try (InputStream in = Files.newInputStream(file)) {
+            head = in.readNBytes(HEAD);
+        } catch (NoSuchFileException e) {
+            throw new NoSuchFileException(file.toString(), null, "no such file");
+        }
+        if (SpyLogReader.isMcap(head)) {
+            return LogFormat.SPY_LOG;
+        }
+        String text = new String(head, StandardCharsets.UTF_8);
+        if (text.startsWith("{") && text.contains("\"format\"") && text.contains("\"" + TraceReader.FORMAT + "\"")) {
+            return LogFormat.PLAYER_TRACE;
+        }
+        if (WritelogImport.looksLikeWritelog(head)) {
+            return LogFormat.WRITELOG;
+        }
+        throw new IOException(file + ": not a log Stagecraft can open (expected an MCAP spy log, a player-trace"
+                + " .trace.jsonl file or a Player writelog file)");
+    }
+
+    private interface Import {
+        List<LogProblem> into(SpyLogWriter out) throws IOException;
+    }
+
+    private static SessionLog imported(Path file, LogFormat format, CodecRegistry codecs, Map<String, String> metadata,
+            Import importer) throws IOException {
+        Path tmp = Files.createTempFile("stagecraft-import-", ".mcap");
+        Runnable delete = () -> {
+            try {
+                Files.deleteIfExists(tmp);
+            } catch (IOException e) {
+                tmp.toFile().deleteOnExit();
+            }
+        };
+        try {
+            List<LogProblem> problems;
+            try (SpyLogWriter out = SpyLogWriter.create(tmp, metadata)) {
+                problems = importer.into(out);
+            }
+            return new SpyLogSession(file, format, SpyLogReader.open(tmp), codecs, problems, delete);
+        } catch (IOException | RuntimeException e) {
+            delete.run();
+            throw e;
+        }
     }
 }

@@ -48,8 +48,24 @@ final class Layout {
         return "/wire/" + conn + "/" + port + "/" + dir.label();
     }
 
-    static Map<String, String> wireChannelMetadata(int conn, int port, Direction dir) {
-        return Map.of("conn", Integer.toString(conn), "port", Integer.toString(port), "dir", dir.label());
+    /**
+     * A wire channel's metadata: its stream, and the connection's addresses when the connection was
+     * opened in this log, so a reader knows every connection from the summary without reading chunks.
+     */
+    static Map<String, String> wireChannelMetadata(int conn, int port, Direction dir, Map<String, String> addresses) {
+        Map<String, String> m = new java.util.TreeMap<>(addresses);
+        m.put("conn", Integer.toString(conn));
+        m.put("port", Integer.toString(port));
+        m.put("dir", dir.label());
+        return m;
+    }
+
+    static final String META_CLIENT = "client";
+    static final String META_LISTEN = "listen";
+    static final String META_UPSTREAM = "upstream";
+
+    static Map<String, String> addressMetadata(String client, String listen, String upstream) {
+        return Map.of(META_CLIENT, nz(client), META_LISTEN, nz(listen), META_UPSTREAM, nz(upstream));
     }
 
     static int kindCode(LogEntry.Kind k) {

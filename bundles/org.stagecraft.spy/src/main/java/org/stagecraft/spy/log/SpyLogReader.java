@@ -38,7 +38,7 @@ public final class SpyLogReader implements AutoCloseable {
     private static final int MAX_RECORD = Integer.MAX_VALUE - 64;
 
     private record ChannelInfo(int id, String topic, String encoding, boolean events, int conn, int port,
-            Direction dir) {
+            Direction dir, Map<String, String> metadata) {
     }
 
     /** A chunk of the file; {@code channels} is null when the file does not say. */
@@ -348,7 +348,7 @@ public final class SpyLogReader implements AutoCloseable {
                 throw new SpyLogFormatException("wire channel " + id + " without conn/port/dir metadata", e);
             }
         }
-        channels.put(id, new ChannelInfo(id, topic, encoding, events, conn, port, dir));
+        channels.put(id, new ChannelInfo(id, topic, encoding, events, conn, port, dir, Map.copyOf(meta)));
     }
 
     private void metadata(Mcap.In r) throws SpyLogFormatException {
@@ -507,6 +507,29 @@ public final class SpyLogReader implements AutoCloseable {
             connections = List.copyOf(list);
         }
         return connections;
+    }
+
+    /**
+     * Every connection that has wire entries, known from the summary alone (no chunk is read): the
+     * wire channels' metadata carries the connection's addresses. Open and close times are not
+     * known this way (-1). Empty if a wire channel lacks the addresses (a log written before they
+     * were recorded there, or a connection whose open event is not in the log): use
+     * {@link #connections()} then.
+     */
+    public List<LogConnection> indexedConnections() {
+        Map<Integer, LogConnection> byConn = new TreeMap<>();
+        for (ChannelInfo c : channels.values()) {
+            if (c.dir() == null) {
+                continue;
+            }
+            String client = c.metadata().get(Layout.META_CLIENT);
+            if (client == null) {
+                return List.of();
+            }
+            byConn.putIfAbsent(c.conn(), new LogConnection(c.conn(), c.port(), client,
+                    c.metadata().get(Layout.META_LISTEN), c.metadata().get(Layout.META_UPSTREAM), -1, -1, null));
+        }
+        return List.copyOf(byConn.values());
     }
 
     private static int portOf(String address) {

@@ -66,6 +66,8 @@ public final class SpyLogWriter implements AutoCloseable {
     private final boolean[] schemaWritten = new boolean[3];
     private final java.util.Set<Integer> channelWritten = new java.util.HashSet<>();
     private int nextChannel = Layout.FIRST_WIRE_CHANNEL;
+    /** Addresses of each opened connection, repeated in its wire channels' metadata. */
+    private final Map<Integer, Map<String, String>> addresses = new HashMap<>();
 
     // the open chunk
     private final Mcap.Buf chunk;
@@ -143,6 +145,7 @@ public final class SpyLogWriter implements AutoCloseable {
     public synchronized void connectionOpened(long timeNanos, int conn, String client, String listen, String upstream)
             throws IOException {
         event(timeNanos, Layout.opened(conn, client, listen, upstream));
+        addresses.put(conn, Layout.addressMetadata(client, listen, upstream));
     }
 
     public synchronized void connectionClosed(long timeNanos, int conn, String reason) throws IOException {
@@ -253,7 +256,8 @@ public final class SpyLogWriter implements AutoCloseable {
             id = nextChannel++;
             wireChannels.put(key, id);
             channels.put(id, new ChannelDef(id, Layout.SCHEMA_WIRE, Layout.wireTopic(conn, port, dir),
-                    Layout.WIRE_ENCODING, new TreeMap<>(Layout.wireChannelMetadata(conn, port, dir))));
+                    Layout.WIRE_ENCODING, new TreeMap<>(Layout.wireChannelMetadata(conn, port, dir,
+                            addresses.getOrDefault(conn, Map.of())))));
         }
         return id;
     }

@@ -116,6 +116,14 @@ class SpyLogTest {
                         assertEquals(x.ports.get(c.conn()), c.port());
                     }
                 }
+                List<LogConnection> indexed = r.indexedConnections();
+                assertEquals(x.ports.keySet().stream().sorted().toList(), indexed.stream().map(LogConnection::conn).toList(),
+                        name + ": every connection with bytes is known from the summary");
+                for (LogConnection c : indexed) {
+                    LogConnection full = conns.stream().filter(k -> k.conn() == c.conn()).findFirst().orElseThrow();
+                    assertEquals(List.of(full.port(), full.client(), full.listen(), full.upstream()),
+                            List.of(c.port(), c.client(), c.listen(), c.upstream()), name + " connection " + c.conn());
+                }
                 assertTrue(Files.size(log) * 2 < x.rawBytes,
                         name + ": compressed " + Files.size(log) + " bytes for " + x.rawBytes + " raw");
             }

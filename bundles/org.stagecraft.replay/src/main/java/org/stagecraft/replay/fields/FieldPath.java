@@ -1,0 +1,201 @@
+package org.stagecraft.replay.fields;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.OptionalDouble;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.stagecraft.player.codec.MessageBody;
+
+/**
+ * A number picked out of a decoded body, for plots and analysis. The text is a dotted path of
+ * Player's field names with list indexes — {@code pos.px}, {@code ranges[3]}, {@code poses[2].px} —
+ * or an aggregate over a list: {@code min(ranges)}, {@code max(ranges)}, {@code mean(ranges)},
+ * {@code sum(ranges)}, {@code count(ranges)}. {@code [*]} takes every element, e.g.
+ * {@code max(poses[*].px)}. A path that does not fit a body evaluates to nothing rather than failing,
+ * since one plot series may see several kinds of message.
+ */
+public final class FieldPath {
+    /** What to do with the numbers a path finds. */
+    public enum Aggregate {
+        NONE, MIN, MAX, MEAN, SUM, COUNT
+    }
+
+    private static final Pattern FUNCTION = Pattern.compile("\\s*(min|max|mean|sum|count)\\s*\\(\\s*(.*?)\\s*\\)\\s*");
+    private static final Pattern SEGMENT = Pattern.compile("([A-Za-z_][A-Za-z0-9_]*)((?:\\[(?:\\d+|\\*)\\])*)");
+    private static final Pattern INDEX = Pattern.compile("\\[(\\d+|\\*)\\]");
+    private static final int ANY = -1;
+
+    private record Step(String name, int[] indexes) {
+    }
+
+    private final String text;
+    private final Aggregate aggregate;
+    private final List<Step> steps;
+
+    private FieldPath(String text, Aggregate aggregate, List<Step> steps) {
+        this.text = text;
+        this.aggregate = aggregate;
+        this.steps = steps;
+    }
+
+    /** @throws IllegalArgumentException saying what is wrong with the text and where */
+    public static FieldPath parse(String text) {
+        if (text == null || text.isBlank()) {
+            throw new IllegalArgumentException("empty field path");
+        }
+        Aggregate aggregate = Aggregate.NONE;
+        String path = text.trim();
+        Matcher fn = FUNCTION.matcher(text);
+        if (fn.matches()) {
+            aggregate = Aggregate.valueOf(fn.group(1).toUpperCase(Locale.ROOT));
+            path = fn.group(2);
+        }
+        List<Step> steps = new ArrayList<>();
+        int pos = 0;
+        for (String seg : path.split("\\.", -1)) {
+            Matcher m = SEGMENT.matcher(seg);
+            if (!m.matches()) {
+                throw new IllegalArgumentException("field path \"" + text + "\": \"" + seg + "\" at character "
+                        + (pos + 1) + " is not a field name with optional [index]");
+            }
+            List<Integer> idx = new ArrayList<>();
+            Matcher im = INDEX.matcher(m.group(2));
+            while (im.find()) {
+                idx.add(im.group(1).equals("*") ? ANY : Integer.parseInt(im.group(1)));
+            }
+            steps.add(new Step(m.group(1), idx.stream().mapToInt(Integer::intValue).toArray()));
+            pos += seg.length() + 1;
+        }
+        if (aggregate == Aggregate.NONE && steps.stream().anyMatch(s -> contains(s.indexes(), ANY))) {
+            throw new IllegalArgumentException("field path \"" + text
+                    + "\": [*] takes many values; wrap it in min(), max(), mean(), sum() or count()");
+        }
+        return new FieldPath(text.trim(), aggregate, List.copyOf(steps));
+    }
+
+    private static boolean contains(int[] a, int v) {
+        for (int x : a) {
+            if (x == v) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    public Aggregate aggregate() {
+        return aggregate;
+    }
+
+    /** The number this path picks out of {@code body}; empty when the body has no such numeric field. */
+    public OptionalDouble evaluate(MessageBody body) {
+        return evaluate(FieldTree.of(body));
+    }
+
+    /** As {@link #evaluate(MessageBody)}, on a tree already built (see {@link FieldTree#of}). */
+    public OptionalDouble evaluate(Field root) {
+        List<Field> found = new ArrayList<>();
+        resolve(root, 0, found);
+        if (aggregate == Aggregate.NONE) {
+            return found.size() == 1 && found.get(0).kind().numeric() ? OptionalDouble.of(found.get(0).number())
+                    : OptionalDouble.empty();
+        }
+        List<Double> values = new ArrayList<>();
+        for (Field f : found) {
+            numbers(f, values);
+        }
+        if (found.isEmpty()) {
+            return OptionalDouble.empty();
+        }
+        return switch (aggregate) {
+            case COUNT -> OptionalDouble.of(values.size());
+            case SUM -> OptionalDouble.of(values.stream().mapToDouble(Double::doubleValue).sum());
+            case MIN -> values.stream().mapToDouble(Double::doubleValue).min();
+            case MAX -> values.stream().mapToDouble(Double::doubleValue).max();
+            case MEAN -> values.stream().mapToDouble(Double::doubleValue).average();
+            case NONE -> throw new AssertionError();
+        };
+    }
+
+    /** Numbers directly in {@code f}: the field itself, or the numeric elements of a list. */
+    private static void numbers(Field f, List<Double> out) {
+        if (f.kind().numeric()) {
+            out.add(f.number());
+        } else if (f.kind() == Field.Kind.LIST) {
+            for (Field c : f.children()) {
+                if (c.kind().numeric()) {
+                    out.add(c.number());
+                }
+            }
+        }
+    }
+
+    private void resolve(Field at, int step, List<Field> out) {
+        if (step == steps.size()) {
+            out.add(at);
+            return;
+        }
+        if (at.kind() != Field.Kind.STRUCT) {
+            return;
+        }
+        Step s = steps.get(step);
+        Field f = at.member(s.name());
+        if (f != null) {
+            index(f, s.indexes(), 0, step, out);
+        }
+    }
+
+    private void index(Field f, int[] indexes, int i, int step, List<Field> out) {
+        if (i == indexes.length) {
+            resolve(f, step + 1, out);
+            return;
+        }
+        if (f.kind() != Field.Kind.LIST) {
+            return;
+        }
+        if (indexes[i] == ANY) {
+            for (Field c : f.children()) {
+                index(c, indexes, i + 1, step, out);
+            }
+        } else if (indexes[i] < f.children().size()) {
+            index(f.children().get(indexes[i]), indexes, i + 1, step, out);
+        }
+    }
+
+    /**
+     * Paths worth offering for a body in a picker: every numeric field outside lists, and for each
+     * list of numbers its minimum, maximum, mean and count (a laser scan's 361 ranges are one choice
+     * each, not 361).
+     */
+    public static List<String> suggestions(MessageBody body) {
+        List<String> out = new ArrayList<>();
+        for (Field f : FieldTree.of(body).children()) {
+            suggest(f.name(), f, out);
+        }
+        return out;
+    }
+
+    private static void suggest(String path, Field f, List<String> out) {
+        switch (f.kind()) {
+            case INTEGER, FLOAT32, FLOAT64 -> out.add(path);
+            case STRUCT -> f.children().forEach(c -> suggest(path + "." + c.name(), c, out));
+            case LIST -> {
+                if (!f.children().isEmpty() && f.children().stream().allMatch(c -> c.kind().numeric())) {
+                    for (String fn : List.of("min", "max", "mean", "count")) {
+                        out.add(fn + "(" + path + ")");
+                    }
+                }
+            }
+            default -> {
+                // text and opaque bytes are not plotted
+            }
+        }
+    }
+
+    @Override
+    public String toString() {
+        return text;
+    }
+}

@@ -1,0 +1,70 @@
+package org.stagecraft.replay.log;
+
+import java.util.Arrays;
+import java.util.Map;
+
+import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.player.codec.DecodedMessage;
+import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.player.wire.MessageHeader;
+import org.stagecraft.spy.log.LogEntry;
+import org.stagecraft.spy.proxy.ConnectionInfo;
+
+/**
+ * Turns spy log entries into {@link LogMessage}s: decodes frames with the same decoder the live spy
+ * uses, so a replayed message is the message the spy published.
+ */
+final class EntryConverter {
+    private final PlayerDecoder decoder;
+    private final Map<Integer, ConnectionInfo> connections;
+
+    EntryConverter(CodecRegistry codecs, Map<Integer, ConnectionInfo> connections) {
+        this.decoder = new PlayerDecoder(codecs);
+        this.connections = connections;
+    }
+
+    ConnectionInfo connection(int conn, int port) {
+        ConnectionInfo c = connections.get(conn);
+        // a recovered log may have lost the open event: name the connection by what is left
+        return c != null ? c : new ConnectionInfo(conn, port, "connection " + conn, "port " + port, "");
+    }
+
+    /** A connection that carried no bytes is not among the indexed ones: its open event names it. */
+    private ConnectionInfo opened(LogEntry.Opened o) {
+        ConnectionInfo c = connections.get(o.conn());
+        return c != null ? c : new ConnectionInfo(o.conn(), -1, o.client(), o.listen(), o.upstream());
+    }
+
+    LogMessage convert(LogEntry e) {
+        return switch (e) {
+            case LogEntry.Opened o -> new LogMessage(o.timeNanos(), opened(o), null, -1, LogMessage.Kind.OPENED, null,
+                    null, "");
+            case LogEntry.Closed c -> new LogMessage(c.timeNanos(), connection(c.conn(), -1), null, -1,
+                    LogMessage.Kind.CLOSED, null, null, c.reason());
+            case LogEntry.Diagnostic d -> new LogMessage(d.timeNanos(), connection(d.conn(), -1), d.dir(),
+                    d.streamOffset(), LogMessage.Kind.DIAGNOSTIC, null, null, d.text());
+            case LogEntry.Wire w -> wire(w);
+        };
+    }
+
+    private LogMessage wire(LogEntry.Wire w) {
+        ConnectionInfo c = connection(w.conn(), w.port());
+        byte[] bytes = w.bytes();
+        return switch (w.kind()) {
+            case BANNER -> new LogMessage(w.timeNanos(), c, w.dir(), w.streamOffset(), LogMessage.Kind.BANNER, bytes,
+                    null, "");
+            case UNFRAMED -> new LogMessage(w.timeNanos(), c, w.dir(), w.streamOffset(), LogMessage.Kind.UNFRAMED,
+                    bytes, null, w.reason());
+            case FRAME -> {
+                if (bytes.length < MessageHeader.SIZE) {
+                    yield new LogMessage(w.timeNanos(), c, w.dir(), w.streamOffset(), LogMessage.Kind.UNFRAMED, bytes,
+                            null, "logged as a message but shorter than a Player header");
+                }
+                DecodedMessage d = decoder.decode(MessageHeader.read(bytes, 0),
+                        Arrays.copyOfRange(bytes, MessageHeader.SIZE, bytes.length));
+                yield new LogMessage(w.timeNanos(), c, w.dir(), w.streamOffset(), LogMessage.Kind.FRAME, bytes, d,
+                        d.hasProblem() ? "payload byte " + d.problem().payloadOffset() + ": " + d.problem().reason() : "");
+            }
+        };
+    }
+}

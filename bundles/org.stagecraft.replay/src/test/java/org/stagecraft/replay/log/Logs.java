@@ -1,0 +1,49 @@
+package org.stagecraft.replay.log;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.stagecraft.player.session.SessionEvent;
+import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceFraming;
+
+/** Test helpers: what a trace holds, framed independently of the code under test. */
+public final class Logs {
+    private Logs() {
+    }
+
+    public static final String GT = "pioneer-laser-sonar.gt.trace.jsonl";
+
+    public static Path trace(String name) {
+        return SharedTraces.file(name);
+    }
+
+    /** Every banner, message and unframed piece of the trace, in the order the framer completes them. */
+    public static List<SessionEvent> framed(Path trace) {
+        List<SessionEvent> out = new ArrayList<>();
+        try {
+            TraceFraming.frame(trace, out::add);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return out;
+    }
+
+    /** Every message a fresh cursor gives from the start of the log to its end. */
+    public static List<LogMessage> all(SessionLog log) throws IOException {
+        List<LogMessage> out = new ArrayList<>();
+        try (LogCursor c = log.cursor(Long.MIN_VALUE)) {
+            for (LogMessage m = c.next(); m != null; m = c.next()) {
+                out.add(m);
+            }
+        }
+        return out;
+    }
+
+    public static long nanos(double t) {
+        return Math.round(t * 1e9);
+    }
+}
