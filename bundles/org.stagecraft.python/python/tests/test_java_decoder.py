@@ -26,8 +26,12 @@ REPO = Path(__file__).resolve().parents[4]
 def stagecraft_decode(trace: Path) -> list[dict]:
     if os.environ.get("STAGECRAFT_JAVA") == "0":
         pytest.skip("STAGECRAFT_JAVA=0: the Java side is not available")
-    cli = REPO / "bundles" / "org.stagecraft.cli" / "target"
-    needed = [cli / "classes" / "org", cli / "lib" / "gson.jar", REPO / "bundles" / "org.stagecraft.player" / "target" / "classes" / "org"]
+    # what ./stagecraft puts on the command line tool's class path (it would start a Maven build without them)
+    bundles = REPO / "bundles"
+    needed = [bundles / b / "target" / "classes" / "org" for b in (
+        "org.stagecraft.player", "org.stagecraft.recording", "org.stagecraft.streams", "org.stagecraft.spy",
+        "org.stagecraft.cli")]
+    needed += [bundles / "org.stagecraft.cli" / "target" / "lib" / jar for jar in ("gson.jar", "zstd-jni.jar")]
     missing = [str(p) for p in needed if not p.exists()]
     if missing:
         pytest.fail(f"the Java command line tool is not built ({', '.join(missing)} missing): run "
