@@ -30,7 +30,7 @@ def stagecraft_decode(trace: Path) -> list[dict]:
     bundles = REPO / "bundles"
     needed = [bundles / b / "target" / "classes" / "org" for b in (
         "org.stagecraft.player", "org.stagecraft.recording", "org.stagecraft.streams", "org.stagecraft.spy",
-        "org.stagecraft.cli")]
+        "org.stagecraft.replay", "org.stagecraft.demo", "org.stagecraft.cli")]
     needed += [bundles / "org.stagecraft.cli" / "target" / "lib" / jar for jar in ("gson.jar", "zstd-jni.jar")]
     missing = [str(p) for p in needed if not p.exists()]
     if missing:
