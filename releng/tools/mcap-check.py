@@ -4,7 +4,9 @@
 For each file: the summary (statistics, channels, chunk indexes) is read through the index, every
 chunk is decompressed and CRC-checked, message counts per channel must equal the statistics, and each
 wire channel must be a gap-free byte stream: every message's stream offset equals the previous
-offset plus the previous message's wire bytes. Exit status 1 on any failure, with the file and why.
+offset plus the previous message's wire bytes. JSON channels other than /events (decoded messages an
+export adds for Foxglove) must hold JSON that fits their channel's JSON Schema. Exit status 1 on any
+failure, with the file and why.
 
 usage: mcap-check.py LOG.mcap [...]
 """
@@ -16,6 +18,27 @@ from collections import Counter
 from mcap.reader import make_reader
 
 WIRE_PREFIX = struct.Struct("<QBH")  # stream offset, kind, reason length
+JSON_TYPES = {"integer": (int,), "number": (int, float, type(None)), "string": (str,), "boolean": (bool,),
+              "array": (list,), "object": (dict,)}
+
+
+def fits(value, schema, where):
+    """Checks a decoded JSON value against the parts of JSON Schema the export writes."""
+    kind = schema.get("type")
+    if kind is None:
+        return
+    if not isinstance(value, JSON_TYPES[kind]) or (kind in ("integer", "number") and isinstance(value, bool)):
+        raise ValueError(f"{where}: {value!r} is not {kind}")
+    if kind == "object":
+        for name in schema.get("required", []):
+            if name not in value:
+                raise ValueError(f"{where}: no {name}")
+        for name, sub in schema.get("properties", {}).items():
+            if name in value:
+                fits(value[name], sub, f"{where}.{name}")
+    elif kind == "array" and "items" in schema:
+        for i, item in enumerate(value):
+            fits(item, schema["items"], f"{where}[{i}]")
 
 
 def check(path):
@@ -32,6 +55,7 @@ def check(path):
         next_offset = {}
         wire_bytes = 0
         events = Counter()
+        json_messages = 0
         for schema, channel, message in reader.iter_messages(log_time_order=False):
             counts[channel.id] += 1
             if channel.message_encoding == "x-player-xdr":
@@ -44,8 +68,13 @@ def check(path):
                     raise ValueError(f"{channel.topic}: message at offset {offset}, expected {expected} (gap or overlap)")
                 next_offset[channel.id] = offset + payload
                 wire_bytes += payload
-            elif channel.message_encoding == "json":
+            elif channel.message_encoding == "json" and channel.topic == "/events":
                 events[json.loads(message.data)["event"]] += 1
+            elif channel.message_encoding == "json":
+                decoded = json.loads(message.data)
+                if schema is not None and schema.encoding == "jsonschema":
+                    fits(decoded, json.loads(schema.data), channel.topic)
+                json_messages += 1
             else:
                 raise ValueError(f"{channel.topic}: unexpected encoding {channel.message_encoding}")
         total = sum(counts.values())
@@ -58,7 +87,8 @@ def check(path):
             raise ValueError(f"{events['opened']} connections opened but {events['closed']} closed")
         compression = sorted({ci.compression for ci in summary.chunk_indexes})
         print(f"{path}: ok — {total} messages, {len(summary.channels)} channels, {len(summary.chunk_indexes)} chunks "
-              f"({'/'.join(compression)}), {wire_bytes} wire bytes gap-free, {events['opened']} connections")
+              f"({'/'.join(compression)}), {wire_bytes} wire bytes gap-free, {events['opened']} connections"
+              + (f", {json_messages} decoded JSON messages" if json_messages else ""))
 
 
 def main(paths):

@@ -11,6 +11,10 @@ public final class Main {
               stats FILE    count messages per direction, interface, type and subtype
               spy --listen [HOST:]PORT --to HOST:PORT [...] [--bind ADDR] [--log FILE]
                             relay robot programs to Player, decode and log everything (Ctrl-C stops)
+              export FILE --format csv|writelog|mcap [--from S] [--until S] [--stream PATTERN] [--grep TEXT] [--out FILE]
+                            a log (spy log, trace or writelog file), or part of it, in another format
+              replay FILE --to [PORT=]HOST:PORT [...] [--speed X] [--loop]
+                            serve a recorded session to robot programs as the recorded Player did
             """;
 
     private Main() {
@@ -30,6 +34,8 @@ public final class Main {
             case "decode" -> new DecodeCommand().run(rest, out, err);
             case "stats" -> new StatsCommand().run(rest, out, err);
             case "spy" -> new SpyCommand().run(rest, out, err);
+            case "export" -> new ExportCommand().run(rest, out, err);
+            case "replay" -> new ReplayCommand().run(rest, out, err);
             default -> {
                 err.println("stagecraft: unknown command '" + args[0] + "'");
                 err.print(USAGE);

@@ -6,6 +6,7 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -13,6 +14,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 
 /**
  * Stands in for Player with a recording: listens on Player's ports and serves every accepted
@@ -47,20 +49,59 @@ public final class RecordedPlayer implements AutoCloseable {
         this.report = report;
     }
 
+    /**
+     * One address to listen on and the recorded connections it serves: the n-th client it accepts
+     * gets connection n modulo their number.
+     */
+    public record Listener(InetSocketAddress address, List<TimedConnection> connections) {
+        public Listener {
+            connections = List.copyOf(connections);
+            if (connections.isEmpty()) {
+                throw new IllegalArgumentException("a listener on " + address + " needs a recorded connection to serve");
+            }
+        }
+    }
+
     /** Binds every port on the loopback interface (all or none) and starts accepting. */
     public synchronized void start(List<Integer> ports) throws IOException {
+        List<InetSocketAddress> addresses = ports.stream()
+                .map(p -> new InetSocketAddress(InetAddress.getLoopbackAddress(), p)).toList();
+        bind(addresses);
+        for (ServerSocket s : servers) {
+            threads.submit(() -> acceptLoop(s, () -> recording.connections()
+                    .get(accepted.getAndIncrement() % recording.connections().size())));
+        }
+    }
+
+    /**
+     * Binds every listener's address (all or none) and starts accepting; each listener serves its
+     * own recorded connections, so a recorded port's traffic is served on the address chosen for it.
+     */
+    public synchronized void start(Collection<Listener> listeners) throws IOException {
+        List<Listener> list = List.copyOf(listeners);
+        int first = servers.size();
+        bind(list.stream().map(Listener::address).toList());
+        for (int i = 0; i < list.size(); i++) {
+            Listener l = list.get(i);
+            ServerSocket server = servers.get(first + i);
+            AtomicInteger n = new AtomicInteger();
+            threads.submit(() -> acceptLoop(server, () -> l.connections().get(n.getAndIncrement() % l.connections().size())));
+        }
+    }
+
+    private void bind(List<InetSocketAddress> addresses) throws IOException {
+        int first = servers.size();
         try {
-            for (int port : ports) {
+            for (InetSocketAddress a : addresses) {
                 ServerSocket s = new ServerSocket();
                 servers.add(s);
-                s.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 50);
+                s.bind(a, 50);
             }
         } catch (IOException e) {
             close();
-            throw new IOException("cannot listen on port " + ports.get(servers.size() - 1) + ": " + e.getMessage(), e);
-        }
-        for (ServerSocket s : servers) {
-            threads.submit(() -> acceptLoop(s));
+            InetSocketAddress a = addresses.get(servers.size() - 1 - first);
+            throw new IOException("cannot listen on " + (a.getAddress().isLoopbackAddress() ? "port " + a.getPort()
+                    : a.getHostString() + ":" + a.getPort()) + ": " + e.getMessage(), e);
         }
     }
 
@@ -69,7 +110,7 @@ public final class RecordedPlayer implements AutoCloseable {
         return servers.stream().map(ServerSocket::getLocalPort).toList();
     }
 
-    private Void acceptLoop(ServerSocket server) {
+    private Void acceptLoop(ServerSocket server, Supplier<TimedConnection> next) {
         while (!server.isClosed()) {
             Socket client;
             try {
@@ -78,7 +119,7 @@ public final class RecordedPlayer implements AutoCloseable {
                 return null; // closed
             }
             open.add(client);
-            TimedConnection conn = recording.connections().get(accepted.getAndIncrement() % recording.connections().size());
+            TimedConnection conn = next.get();
             threads.submit(() -> serve(client, server.getLocalPort(), conn));
         }
         return null;

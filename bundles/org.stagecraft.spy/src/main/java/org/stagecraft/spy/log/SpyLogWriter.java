@@ -64,6 +64,13 @@ public final class SpyLogWriter implements AutoCloseable {
     private final Map<Integer, ChannelDef> channels = new TreeMap<>();
     private final Map<Integer, Long> sequences = new HashMap<>();
     private final boolean[] schemaWritten = new boolean[3];
+    /** Schemas of channels other tools add ({@link #addChannel}), ids after the spy's own. */
+    private record SchemaDef(int id, String name, String encoding, byte[] data) {
+    }
+
+    private final Map<Integer, SchemaDef> extraSchemas = new TreeMap<>();
+    private final java.util.Set<Integer> extraSchemaWritten = new java.util.HashSet<>();
+    private int nextExtraChannel = -1;
     private final java.util.Set<Integer> channelWritten = new java.util.HashSet<>();
     private int nextChannel = Layout.FIRST_WIRE_CHANNEL;
     /** Addresses of each opened connection, repeated in its wire channels' metadata. */
@@ -196,6 +203,55 @@ public final class SpyLogWriter implements AutoCloseable {
         event(timeNanos, Layout.diagnostic(conn, dir, streamOffset, text));
     }
 
+    /**
+     * Adds a channel of another kind beside the spy's own, e.g. decoded JSON for viewers such as
+     * Foxglove. Readers of spy logs skip such channels. A log without added channels is byte for byte
+     * what it was before this method existed.
+     *
+     * @param schemaEncoding e.g. "jsonschema"; with {@code schemaData} empty and encoding "" for no schema
+     * @return the channel id to pass to {@link #message}
+     */
+    public synchronized int addChannel(String topic, String messageEncoding, String schemaName, String schemaEncoding,
+            byte[] schemaData, Map<String, String> metadata) throws IOException {
+        check();
+        int schemaId = 0;
+        if (schemaName != null) {
+            for (SchemaDef d : extraSchemas.values()) {
+                if (d.name().equals(schemaName) && d.encoding().equals(schemaEncoding) && Arrays.equals(d.data(), schemaData)) {
+                    schemaId = d.id();
+                }
+            }
+            if (schemaId == 0) {
+                schemaId = schemaWritten.length + extraSchemas.size();
+                extraSchemas.put(schemaId, new SchemaDef(schemaId, schemaName, schemaEncoding, schemaData.clone()));
+            }
+        }
+        // added channels count down from the top of the id space, so the spy's wire channels keep
+        // the ids they would have had without them
+        if (nextExtraChannel < 0) {
+            nextExtraChannel = 0xffff;
+        }
+        if (nextExtraChannel < nextChannel) {
+            throw new IOException("more than " + (0xffff - 1) + " channels in one spy log");
+        }
+        int id = nextExtraChannel--;
+        channels.put(id, new ChannelDef(id, schemaId, topic, messageEncoding,
+                new TreeMap<>(metadata == null ? Map.of() : metadata)));
+        return id;
+    }
+
+    /** One message on a channel {@link #addChannel} made. */
+    public synchronized void message(int channel, long timeNanos, byte[] data) throws IOException {
+        check();
+        ChannelDef c = channels.get(channel);
+        if (c == null || channel <= nextExtraChannel) {
+            throw new IllegalArgumentException("channel " + channel + " was not added with addChannel");
+        }
+        int at = beginMessage(channel, timeNanos);
+        chunk.bytes(data);
+        endMessage(at);
+    }
+
     /** Wire messages written (banners, Player messages, unframed pieces); events are not counted. */
     public synchronized long messagesWritten() {
         return wireCount;
@@ -250,7 +306,7 @@ public final class SpyLogWriter implements AutoCloseable {
         StreamKey key = new StreamKey(conn, port, dir);
         Integer id = wireChannels.get(key);
         if (id == null) {
-            if (nextChannel > 0xffff) {
+            if (nextChannel > 0xffff || (nextExtraChannel >= 0 && nextChannel > nextExtraChannel)) {
                 throw new IOException("more than " + (0xffff - 1) + " streams in one spy log");
             }
             id = nextChannel++;
@@ -301,7 +357,11 @@ public final class SpyLogWriter implements AutoCloseable {
             return;
         }
         ChannelDef c = channels.get(channel);
-        if (!schemaWritten[c.schemaId()]) {
+        if (c.schemaId() >= schemaWritten.length) {
+            if (extraSchemaWritten.add(c.schemaId())) {
+                extraSchema(chunk, extraSchemas.get(c.schemaId()));
+            }
+        } else if (c.schemaId() != 0 && !schemaWritten[c.schemaId()]) {
             schema(chunk, c.schemaId());
             schemaWritten[c.schemaId()] = true;
         }
@@ -372,6 +432,11 @@ public final class SpyLogWriter implements AutoCloseable {
                 schema(b, s);
             }
         }
+        for (SchemaDef d : extraSchemas.values()) {
+            if (extraSchemaWritten.contains(d.id())) {
+                extraSchema(b, d);
+            }
+        }
         group(groups, Mcap.OP_SCHEMA, summaryStart + g - sumFrom, b.size() - g);
         g = b.size();
         for (ChannelDef c : channels.values()) {
@@ -386,6 +451,7 @@ public final class SpyLogWriter implements AutoCloseable {
         for (boolean s : schemaWritten) {
             schemas += s ? 1 : 0;
         }
+        schemas += extraSchemaWritten.size();
         b.u64(messageCount).u16(schemas).u32(channelWritten.size()).u32(0).u32(metadataIndexes.size())
                 .u32(chunkIndexes.size()).u64(messageCount == 0 ? 0 : startTime).u64(messageCount == 0 ? 0 : endTime);
         int map = b.beginU32();
@@ -446,6 +512,12 @@ public final class SpyLogWriter implements AutoCloseable {
             byte[] json = Layout.utf8(Layout.EVENT_SCHEMA_JSON);
             b.string(Layout.SCHEMA_EVENT_NAME).string("jsonschema").u32(json.length).bytes(json);
         }
+        b.end(at);
+    }
+
+    private static void extraSchema(Mcap.Buf b, SchemaDef d) {
+        int at = b.begin(Mcap.OP_SCHEMA);
+        b.u16(d.id()).string(d.name()).string(d.encoding()).u32(d.data().length).bytes(d.data());
         b.end(at);
     }
 

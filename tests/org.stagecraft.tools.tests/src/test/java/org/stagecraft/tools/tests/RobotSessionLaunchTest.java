@@ -63,6 +63,7 @@ import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.session.RobotSession;
 import org.stagecraft.tools.types.ToolDefinition;
 import org.stagecraft.tools.ui.launch.LaunchAttributes;
+import org.stagecraft.tools.ui.launch.PythonClientPath;
 import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
 import org.stagecraft.tools.ui.launch.SessionParts;
 import org.stagecraft.tools.ui.prefs.ToolPreferences;
@@ -278,6 +279,34 @@ class RobotSessionLaunchTest {
             assertNotNull(replayed, "the replayed client's bytes are in the log");
             assertArrayEquals(recorded.serverBytes(), reader.streamBytes(replayed.conn(), Direction.SERVER_TO_CLIENT));
         }
+    }
+
+    @Test
+    void theRobotProgramFindsStagecraftsPythonClientAfterItsOwnPythonPath() throws Exception {
+        int port = Ports.free("127.0.0.1", 1).get(0);
+        IFile robot = Fixtures.write(project, "robot.py", """
+                import importlib.util, os
+                spec = importlib.util.find_spec("stagecraft_player")
+                print("client " + (spec.origin if spec else "missing"))
+                print("pythonpath " + os.environ.get("PYTHONPATH", ""))
+                """);
+        Path userLibs = Files.createDirectories(tmp.resolve("user-libs"));
+        ILaunchConfigurationWorkingCopy wc = config(project.getFile("worlds/pioneer-laser-sonar.cfg"), port);
+        wc.setAttribute(LaunchAttributes.PROGRAM, robot.getFullPath().toString());
+        wc.setAttribute(ILaunchManager.ATTR_ENVIRONMENT_VARIABLES, Map.of("PYTHONPATH", userLibs.toString()));
+        ILaunch launch = launch(wc);
+        IProcess program = process(launch, "robot.py (python3)");
+        Await.until("the robot program ended", WAIT, program::isTerminated);
+        assertEquals(0, program.getExitValue());
+
+        String folder = PythonClientPath.folder().orElseThrow();
+        assertTrue(Files.isRegularFile(Path.of(folder, "stagecraft_player", "__init__.py")), folder);
+        awaitConsole(program, "client " + Path.of(folder, "stagecraft_player", "__init__.py"));
+        awaitConsole(program, "pythonpath " + userLibs + java.io.File.pathSeparator + folder + "\n");
+        assertEquals("a:b", PythonClientPath.append("a:b", "b"), "a folder already there is not added twice");
+        assertEquals("x", PythonClientPath.append("", "x"));
+        launch.terminate();
+        Await.until("the launch is terminated", WAIT, launch::isTerminated);
     }
 
     @Test

@@ -1,0 +1,150 @@
+package org.stagecraft.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.stagecraft.recording.peer.RecordedConnection;
+import org.stagecraft.recording.trace.SharedTraces;
+
+/** export and replay from the command line, the replay with a real socket client. */
+class ExportAndReplayCommandsTest {
+    private static final Path TRACE = SharedTraces.file("pioneer-laser-sonar.gt.trace.jsonl");
+
+    @TempDir
+    Path tmp;
+
+    private record Result(int code, String out, String err) {
+    }
+
+    private static Result run(String... args) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = Main.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+        return new Result(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+    }
+
+    @Test
+    void exportWritesEachFormatAndSaysWhatIsWrong() throws IOException {
+        Result csv = run("export", TRACE.toString(), "--format", "csv", "--stream", "dev=laser type=DATA");
+        assertEquals(0, csv.code(), csv.err());
+        List<String> lines = csv.out().lines().toList();
+        assertTrue(lines.get(0).startsWith("time,conn,dir,iface,index,type,subtype,size,timestamp,min_angle"), lines.get(0));
+        assertEquals(602, lines.size() - 1, "the trace's 602 laser scans");
+        assertTrue(csv.err().contains("602 rows"), csv.err());
+
+        Path wl = tmp.resolve("gt.log");
+        Result w = run("export", TRACE.toString(), "--format", "writelog", "--out", wl.toString());
+        assertEquals(0, w.code(), w.err());
+        assertTrue(Files.readString(wl).startsWith("## Player version 3.1.1-dev"));
+        assertTrue(w.err().contains("skipped 286 x player SYNCH OK"), w.err());
+
+        // the writelog export opens like any log: export it again, as MCAP
+        Path mcap = tmp.resolve("gt.mcap");
+        Result m = run("export", wl.toString(), "--format", "mcap", "--out", mcap.toString());
+        assertEquals(0, m.code(), m.err());
+        assertTrue(Files.size(mcap) > 100_000);
+
+        Result noOut = run("export", TRACE.toString(), "--format", "mcap");
+        assertEquals(2, noOut.code());
+        assertTrue(noOut.err().contains("--format mcap needs --out FILE"), noOut.err());
+        Result badFormat = run("export", TRACE.toString(), "--format", "xls");
+        assertEquals(2, badFormat.code());
+        assertTrue(badFormat.err().contains("csv, writelog or mcap"), badFormat.err());
+        Result missing = run("export", tmp.resolve("nope.mcap").toString(), "--format", "csv");
+        assertEquals(1, missing.code());
+        assertTrue(missing.err().contains("nope.mcap: no such file"), missing.err());
+        Result badPattern = run("export", TRACE.toString(), "--format", "csv", "--stream", "dev=warpdrive");
+        assertEquals(2, badPattern.code());
+        assertTrue(badPattern.err().contains("warpdrive"), badPattern.err());
+    }
+
+    /** Collects what the command prints and hands out the port it listens on. */
+    private static final class Watched extends OutputStream {
+        private final ByteArrayOutputStream all = new ByteArrayOutputStream();
+        final CompletableFuture<Integer> port = new CompletableFuture<>();
+
+        @Override
+        public synchronized void write(int b) {
+            all.write(b);
+            Matcher m = Pattern.compile("listening on [^ ]+:(\\d+)\\R").matcher(text());
+            if (m.find()) {
+                port.complete(Integer.parseInt(m.group(1)));
+            }
+        }
+
+        synchronized String text() {
+            return all.toString(StandardCharsets.UTF_8);
+        }
+    }
+
+    @Test
+    void replayServesTheRecordedServerStreamToARealClientAndWarnsWhenTheClientDiffers() throws Exception {
+        RecordedConnection recorded = RecordedConnection.read(TRACE).get(0);
+        for (boolean sameClient : new boolean[] { true, false }) {
+            Watched out = new Watched();
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            CompletableFuture<Integer> code = CompletableFuture.supplyAsync(() -> Main.run(
+                    new String[] { "replay", TRACE.toString(), "--to", "127.0.0.1:0", "--speed", "16" },
+                    new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8)));
+            int port = out.port.get(30, TimeUnit.SECONDS);
+            byte[] received;
+            try (Socket s = new Socket(InetAddress.getLoopbackAddress(), port)) {
+                OutputStream o = s.getOutputStream();
+                o.write(sameClient ? recorded.clientBytes() : "not what the robot program said".getBytes(StandardCharsets.UTF_8));
+                InputStream in = s.getInputStream();
+                received = in.readAllBytes();
+            }
+            assertArrayEquals(recorded.serverBytes(), received, "the recorded banner and server stream, byte for byte");
+            assertEquals(0, code.get(60, TimeUnit.SECONDS), err.toString(StandardCharsets.UTF_8));
+            String errText = err.toString(StandardCharsets.UTF_8);
+            if (sameClient) {
+                assertTrue(out.text().contains("exactly what the recorded robot program sent"), out.text());
+                assertEquals("", errText);
+            } else {
+                assertTrue(errText.contains("warning:") && errText.contains("first difference at byte 0"), errText);
+            }
+            assertTrue(out.text().contains("recorded port 6665 (1 connection) listening on 127.0.0.1:" + port), out.text());
+        }
+    }
+
+    @Test
+    void replaySaysWhichPortIsInUseAndWhichFileIsMissing() throws IOException {
+        try (ServerSocket busy = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            Result r = run("replay", TRACE.toString(), "--to", "127.0.0.1:" + busy.getLocalPort());
+            assertEquals(1, r.code());
+            assertTrue(r.err().contains("cannot listen on port " + busy.getLocalPort()), r.err());
+        }
+        Result missing = run("replay", tmp.resolve("gone.trace.jsonl").toString(), "--to", "127.0.0.1:0");
+        assertEquals(1, missing.code());
+        assertTrue(missing.err().contains("gone.trace.jsonl: no such file"), missing.err());
+        Result noPort = run("replay", TRACE.toString(), "--to", "7000=127.0.0.1:0");
+        assertEquals(2, noPort.code());
+        assertTrue(noPort.err().contains("no connection to port 7000 (its ports: [6665])"), noPort.err());
+        Result tooMany = run("replay", TRACE.toString(), "--to", "127.0.0.1:0", "--to", "127.0.0.1:0");
+        assertEquals(2, tooMany.code());
+        assertTrue(tooMany.err().contains("only 1 Player port"), tooMany.err());
+        Result noTo = run("replay", TRACE.toString());
+        assertEquals(2, noTo.code());
+    }
+}

@@ -1,0 +1,1 @@
+"""One module per Player interface: its payload layouts and its proxy."""
