@@ -102,7 +102,12 @@ public class RobotView extends ViewPart {
         installMouse();
         installMenu();
         scene.connect(bus, false); // the world model is the bus's shared one
-        sourcesListener = BusSources.listen(() -> parent.getDisplay().asyncExec(this::attach));
+        var display = parent.getDisplay();
+        sourcesListener = BusSources.listen(() -> {
+            if (!display.isDisposed()) {
+                display.asyncExec(this::attach); // sources change on any thread (an editor closing, a session ending)
+            }
+        });
         describeSource();
         redraw.request();
     }

@@ -342,7 +342,9 @@ public class SessionLogEditor extends EditorPart {
     /** Opens a new Robot View following this log's replay. */
     public RobotView showInRobotView() throws PartInitException {
         IWorkbenchPage page = getSite().getPage();
-        RobotView view = (RobotView) page.showView(RobotView.ID, "log" + VIEWS.incrementAndGet(), IWorkbenchPage.VIEW_ACTIVATE);
+        // a fresh secondary id: views kept from an earlier session must not be taken over
+        String secondary = "log-" + Long.toString(System.currentTimeMillis(), 36) + "-" + VIEWS.incrementAndGet();
+        RobotView view = (RobotView) page.showView(RobotView.ID, secondary, IWorkbenchPage.VIEW_ACTIVATE);
         view.followSource(sourceId);
         return view;
     }
