@@ -55,6 +55,8 @@ public final class InspectorPanel {
     private MessageFilter filter;
     private MessageWindow window = new MessageWindow(java.util.List.of(), 0, true, true);
     private boolean loading;
+    /** The replay position the current window was read around. */
+    private long readAt;
     private LogMessage detailed;
 
     /**
@@ -193,7 +195,9 @@ public final class InspectorPanel {
         if (log == null || loading) {
             return;
         }
-        boolean outside = window.isEmpty() ? !(window.atStart() && window.atEnd())
+        // an empty window (a sparse filter) is read again only once the replay has moved on a second:
+        // each read may skip up to SCAN_LIMIT entries on each side
+        boolean outside = window.isEmpty() ? !(window.atStart() && window.atEnd()) && Math.abs(position - readAt) > 1_000_000_000L
                 : (position < window.rows().get(0).message().timeNanos() && !window.atStart())
                         || (position > window.rows().get(window.rows().size() - 1).message().timeNanos() && !window.atEnd());
         if (outside) {
@@ -240,6 +244,7 @@ public final class InspectorPanel {
             return;
         }
         MessageFilter f = filter;
+        readAt = position;
         load(() -> MessageWindow.around(l, f, position, HALF_WINDOW, HALF_WINDOW, SCAN_LIMIT), last);
     }
 
