@@ -22,6 +22,7 @@ import org.eclipse.ui.IViewSite;
 import org.eclipse.ui.IWorkbenchPartReference;
 import org.eclipse.ui.PartInitException;
 import org.eclipse.ui.part.ViewPart;
+import org.stagecraft.replay.analysis.RecordedSeries;
 import org.stagecraft.replay.analysis.Series;
 import org.stagecraft.replay.analysis.SeriesSampler;
 import org.stagecraft.replay.analysis.SeriesSpec;
@@ -35,7 +36,9 @@ import org.stagecraft.replay.ui.internal.PlotCanvas;
  * ({@code position2d.pos.px}, {@code ranger:1 min(ranges)}), with the replay cursor as a vertical line;
  * a click moves the replay. Follows the Session Log editor last activated (or the one that opened it).
  * Series are sampled in the background over the log with a bounded number of points (about one per two
- * pixels, min-max thinned, {@link SeriesSampler}); the series texts persist in the view's memento.
+ * pixels, min-max thinned, {@link SeriesSampler}); derived streams, which no log holds, are recorded
+ * from the editor's bus as the replay publishes them ({@link RecordedSeries}) and drawn with the rest.
+ * The series texts persist in the view's memento.
  */
 public class PlotView extends ViewPart {
     public static final String ID = "org.stagecraft.replay.ui.plot";
@@ -57,6 +60,12 @@ public class PlotView extends ViewPart {
     private int sampledWidth;
     private boolean sampling;
     private IPartListener2 partListener;
+    /** The last log sampling, per series, and the time range it covers. */
+    private List<Series> sampled = List.of();
+    private long sampledFrom, sampledTo = 1;
+    /** Per series, what the editor's bus carried of derived streams; rebuilt with the series or the editor. */
+    private final List<RecordedSeries> recorders = new ArrayList<>();
+    private long drawnVersion = -1;
 
     @Override
     public void init(IViewSite site, IMemento memento) throws PartInitException {
@@ -151,11 +160,13 @@ public class PlotView extends ViewPart {
     public void addSeries(String text) {
         SeriesText.spec(text, editorColumnsRegistry());
         texts.add(text.strip());
+        record();
         resample(true);
     }
 
     public void removeSeries(String text) {
         texts.remove(text);
+        record();
         resample(true);
     }
 
@@ -183,7 +194,46 @@ public class PlotView extends ViewPart {
         }
         editor = e;
         setContentDescription(e == null ? "No Session Log" : e.getPartName());
+        record();
         resample(true);
+    }
+
+    /** Records every series' derived streams from the editor's bus (the replay's). */
+    private void record() {
+        recorders.forEach(RecordedSeries::close);
+        recorders.clear();
+        SessionLogEditor e = editor;
+        if (e == null) {
+            return;
+        }
+        for (String t : texts) {
+            try {
+                recorders.add(new RecordedSeries(SeriesText.spec(t, e.columns().registry()), e.bus(),
+                        RecordedSeries.DEFAULT_CAPACITY));
+            } catch (IllegalArgumentException ex) {
+                LOG.warn("Plot: series '" + t + "': " + ex.getMessage());
+            }
+        }
+        drawnVersion = -1;
+    }
+
+    private long recordedVersion() {
+        long v = 0;
+        for (RecordedSeries r : recorders) {
+            v += r.version();
+        }
+        return v;
+    }
+
+    /** The log's samples with what was recorded from the bus, series by series. */
+    private void draw() {
+        List<Series> out = new ArrayList<>();
+        for (int i = 0; i < sampled.size(); i++) {
+            Series s = sampled.get(i);
+            out.add(i < recorders.size() ? s.merge(recorders.get(i).snapshot(sampledFrom, sampledTo)) : s);
+        }
+        drawnVersion = recordedVersion();
+        plot.setData(out, sampledFrom, sampledTo, sampledFrom);
     }
 
     private void seek(long t) {
@@ -206,6 +256,8 @@ public class PlotView extends ViewPart {
         }
         if (e != null && e.log() != sampledLog) {
             resample(true);
+        } else if (!sampling && recordedVersion() != drawnVersion) {
+            draw();
         }
         plot.control().getDisplay().timerExec(CURSOR_MILLIS, this::tick);
     }
@@ -227,6 +279,7 @@ public class PlotView extends ViewPart {
         sampledLog = log;
         sampledWidth = width;
         if (log == null) {
+            sampled = List.of();
             plot.setData(List.of(), 0, 1, 0);
             plot.setMessage(e == null ? "Open a Session Log to plot it" : "The log could not be opened");
             return;
@@ -259,7 +312,10 @@ public class PlotView extends ViewPart {
                 display.asyncExec(() -> {
                     if (g == generation.get() && !plot.control().isDisposed()) {
                         sampling = false;
-                        plot.setData(result, from, to, from);
+                        sampled = result;
+                        sampledFrom = from;
+                        sampledTo = to;
+                        draw();
                         if (message != null) {
                             plot.setMessage(message);
                         }
@@ -293,6 +349,7 @@ public class PlotView extends ViewPart {
         }
         generation.incrementAndGet();
         sampler.shutdownNow();
+        recorders.forEach(RecordedSeries::close);
         super.dispose();
     }
 }

@@ -12,6 +12,29 @@ package org.stagecraft.replay.analysis;
  */
 public record Series(SeriesSpec spec, long[] times, double[] values, long matched) {
 
+    /** This series' points and {@code other}'s (same spec) in one time order; counts add up. */
+    public Series merge(Series other) {
+        if (other.size() == 0) {
+            return this;
+        }
+        if (size() == 0) {
+            return new Series(spec, other.times, other.values, matched + other.matched);
+        }
+        long[] t = new long[size() + other.size()];
+        double[] v = new double[t.length];
+        int i = 0, j = 0, k = 0;
+        while (i < size() || j < other.size()) {
+            if (j >= other.size() || (i < size() && times[i] <= other.times[j])) {
+                t[k] = times[i];
+                v[k++] = values[i++];
+            } else {
+                t[k] = other.times[j];
+                v[k++] = other.values[j++];
+            }
+        }
+        return new Series(spec, t, v, matched + other.matched);
+    }
+
     public int size() {
         return times.length;
     }

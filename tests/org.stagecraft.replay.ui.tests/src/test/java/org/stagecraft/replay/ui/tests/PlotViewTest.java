@@ -69,4 +69,43 @@ class PlotViewTest {
         assertTrue(target > middle);
         page.hideView(plot);
     }
+
+    /**
+     * A derived stream (the test's RangerMinimum processor, run on the editor's bus like every
+     * contributed processor) is in no log: the plot records it from the bus as the replay publishes it,
+     * and its values are the minimum of the logged ranger readings at the same times.
+     */
+    @Test
+    void aDerivedStreamIsPlottedAsTheReplayPublishesIt() throws Exception {
+        SessionLogEditor e = SessionLogEditorTest.open(page, TestLogs.trace());
+        PlotView plot = e.showPlot();
+        for (String s : List.copyOf(plot.seriesTexts())) {
+            plot.removeSeries(s);
+        }
+        plot.addSeries("type=128 dev=62 index=0 | value");
+        Ui.spinUntil(() -> !plot.sampling() && plot.series().size() == 1, 30_000, "the log sampled");
+        assertEquals(0, plot.series().get(0).size(), "no derived stream in the log itself");
+
+        e.replayer().setSpeed(16);
+        e.replayer().play();
+        long five = e.log().startNanos() + 5_000_000_000L;
+        Ui.spinUntil(() -> e.replayer().position() >= five, 30_000, "five seconds of replay");
+        e.replayer().pause();
+        Ui.spinUntil(() -> plot.series().get(0).size() > 10, 10_000, "recorded points of the derived stream");
+
+        Series derived = plot.series().get(0);
+        java.util.Map<Long, Double> expected = new java.util.HashMap<>();
+        try (var c = e.log().cursor(e.log().startNanos())) {
+            for (var m = c.next(); m != null && m.timeNanos() <= e.replayer().position(); m = c.next()) {
+                if (m.decoded() != null && e.columns().device(m).equals("ranger:0") && m.decoded().header().type() == 1
+                        && m.decoded().header().subtype() == 1) {
+                    expected.put(m.timeNanos(), RangerMinimum.MIN.evaluate(m.decoded().body()).getAsDouble());
+                }
+            }
+        }
+        for (int i = 0; i < derived.size(); i++) {
+            assertEquals(expected.get(derived.times()[i]), derived.values()[i], "point " + i + " at " + derived.times()[i]);
+        }
+        page.hideView(plot);
+    }
 }
