@@ -165,31 +165,15 @@ public final class Replayer implements AutoCloseable {
 
     /** Publishes the next message and moves past it; null at the end. Pauses play first. */
     public LogMessage stepForward() {
-        LogMessage m;
-        boolean was;
-        lock.lock();
-        try {
-            checkOpen();
-            was = playing;
-            pauseLocked();
-            m = io(cursor::next);
-            if (m != null) {
-                publish(m);
-            }
-        } finally {
-            lock.unlock();
-        }
-        if (was) {
-            fireState();
-        }
-        if (m != null) {
-            fireMoved(m.timeNanos(), m);
-        }
-        return m;
+        return step(cursor::next);
     }
 
     /** Moves back before the previous message and publishes it again; null at the start. Pauses first. */
     public LogMessage stepBack() {
+        return step(cursor::previous);
+    }
+
+    private LogMessage step(IoCall<LogMessage> move) {
         LogMessage m;
         boolean was;
         lock.lock();
@@ -197,7 +181,7 @@ public final class Replayer implements AutoCloseable {
             checkOpen();
             was = playing;
             pauseLocked();
-            m = io(cursor::previous);
+            m = io(move);
             if (m != null) {
                 publish(m);
             }

@@ -26,7 +26,7 @@ import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.recording.trace.SharedTraces;
-import org.stagecraft.replay.TraceLogs;
+import org.stagecraft.replay.log.Logs;
 import org.stagecraft.replay.fields.FlatFields;
 import org.stagecraft.replay.log.LogFormat;
 import org.stagecraft.replay.log.LogMessage;
@@ -44,7 +44,7 @@ class ExportTest {
     private static final Path TRACE = SharedTraces.file("pioneer-laser-sonar.gt.trace.jsonl");
 
     private static List<LogMessage> frames(SessionLog log) throws IOException {
-        return TraceLogs.all(log).stream().filter(m -> m.kind() == LogMessage.Kind.FRAME).toList();
+        return Logs.all(log).stream().filter(m -> m.kind() == LogMessage.Kind.FRAME).toList();
     }
 
     /** RFC 4180 rows (quoted cells allowed). */
@@ -191,7 +191,7 @@ class ExportTest {
         Path out = Files.createDirectories(Path.of("target", "test-logs")).resolve("export-gt.mcap");
         try (SessionLog log = SessionLogs.open(TRACE)) {
             McapExport.Summary s = McapExport.write(log, ExportFilter.all(), REGISTRY, out);
-            List<LogMessage> all = TraceLogs.all(log);
+            List<LogMessage> all = Logs.all(log);
             List<LogMessage> frames = all.stream().filter(m -> m.kind() == LogMessage.Kind.FRAME).toList();
             assertEquals(frames.size(), s.jsonMessages());
 
@@ -232,7 +232,7 @@ class ExportTest {
             // nothing lost: the export opens as a spy log with the same wire bytes
             try (SessionLog back = SessionLogs.open(out)) {
                 assertEquals(LogFormat.SPY_LOG, back.format());
-                List<LogMessage> again = TraceLogs.all(back);
+                List<LogMessage> again = Logs.all(back);
                 List<LogMessage> wire = all.stream().filter(m -> m.kind() != LogMessage.Kind.OPENED
                         && m.kind() != LogMessage.Kind.CLOSED && m.kind() != LogMessage.Kind.DIAGNOSTIC).toList();
                 List<LogMessage> wireAgain = again.stream().filter(m -> m.kind() != LogMessage.Kind.OPENED

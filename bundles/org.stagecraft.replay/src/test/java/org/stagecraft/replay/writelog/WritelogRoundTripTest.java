@@ -20,9 +20,10 @@ import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.PlayerEncoder;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.recording.trace.SharedTraces;
-import org.stagecraft.replay.TraceLogs;
+import org.stagecraft.replay.log.Logs;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
+import org.stagecraft.replay.log.SessionLogs;
 
 /**
  * Every message of the shared traces that writelog can hold, written as writelog text and read back,
@@ -44,9 +45,9 @@ class WritelogRoundTripTest {
         List<DecodedMessage> written = new ArrayList<>();
         long frames = 0;
         WritelogWriter w;
-        try (SessionLog log = TraceLogs.open(trace)) {
+        try (SessionLog log = SessionLogs.open(trace)) {
             w = new WritelogWriter(text, REGISTRY, "3.1.1-dev", trace.getFileName().toString());
-            for (LogMessage m : TraceLogs.all(log)) {
+            for (LogMessage m : Logs.all(log)) {
                 if (m.kind() == LogMessage.Kind.FRAME) {
                     frames++;
                     if (w.write(m)) {
@@ -101,9 +102,9 @@ class WritelogRoundTripTest {
     @MethodSource("traces")
     void writingTheReadBackFileAgainGivesTheSameText(Path trace) throws IOException {
         StringWriter first = new StringWriter();
-        try (SessionLog log = TraceLogs.open(trace)) {
+        try (SessionLog log = SessionLogs.open(trace)) {
             WritelogWriter w = new WritelogWriter(first, REGISTRY, "3.1.1-dev", "x");
-            for (LogMessage m : TraceLogs.all(log)) {
+            for (LogMessage m : Logs.all(log)) {
                 w.write(m);
             }
         }
