@@ -124,6 +124,7 @@ public class SessionLogEditor extends EditorPart {
             return r != null ? r.position() : l != null ? l.startNanos() : 0;
         }, this::inspectorSelected);
         split.setWeights(35, 65);
+        installKeys(new Transport());
         updates = new UiThrottle(root.getDisplay(), 50, this::showReplayState);
         densityUpdates = new UiThrottle(root.getDisplay(), 250, this::showDensity);
 
@@ -131,6 +132,22 @@ public class SessionLogEditor extends EditorPart {
         processors = StreamProcessorExtensionRegistry.startAll(bus); // derived streams, as on the live bus
         registerSource();
         open(Long.MIN_VALUE);
+    }
+
+    /** On the timeline: Space plays or pauses, Left and Right step, Home goes to the start. */
+    private void installKeys(TransportBar.Host t) {
+        timeline.canvas().addListener(SWT.KeyDown, e -> {
+            switch (e.keyCode) {
+                case ' ' -> t.playPause();
+                case SWT.ARROW_LEFT -> t.stepBack();
+                case SWT.ARROW_RIGHT -> t.stepForward();
+                case SWT.HOME -> t.toStart();
+                default -> {
+                    return;
+                }
+            }
+            e.doit = false;
+        });
     }
 
     private void registerSource() {
@@ -487,7 +504,7 @@ public class SessionLogEditor extends EditorPart {
 
     @Override
     public void setFocus() {
-        transport.control().setFocus();
+        timeline.canvas().setFocus(); // where the transport keys work
     }
 
     @Override

@@ -143,6 +143,20 @@ class SessionLogEditorTest {
             Ui.press(e.transport().control(), "\u25C0|");
             Ui.spinUntil(() -> !received.isEmpty(), 5_000, "step back to publish");
             assertEquals(expected.key(), received.poll().key());
+
+            // the same from the keyboard on the timeline: Right steps forward, Space plays and pauses
+            received.clear();
+            Event right = new Event();
+            right.keyCode = SWT.ARROW_RIGHT;
+            e.timeline().canvas().notifyListeners(SWT.KeyDown, right);
+            Ui.spinUntil(() -> !received.isEmpty(), 5_000, "the Right key to step");
+            assertEquals(expected.key(), received.poll().key());
+            Event space = new Event();
+            space.keyCode = ' ';
+            e.timeline().canvas().notifyListeners(SWT.KeyDown, space);
+            assertTrue(e.replayer().playing());
+            e.timeline().canvas().notifyListeners(SWT.KeyDown, space);
+            assertFalse(e.replayer().playing());
         }
     }
 
