@@ -13,7 +13,16 @@ from __future__ import annotations
 import math
 from typing import Any, Union
 
-import pint
+try:
+    import pint
+except ModuleNotFoundError as missing:  # pragma: no cover - depends on the interpreter
+    # A Robot Session puts this package on PYTHONPATH but cannot install pint for the program's
+    # interpreter: say what to do instead of a bare "No module named 'pint'".
+    raise ModuleNotFoundError(
+        "stagecraft_player needs pint for quantities with units: pip install pint "
+        "(or apt-get install python3-pint) for the interpreter that runs this program",
+        name="pint",
+    ) from missing
 
 from .errors import UnitError
 
