@@ -68,6 +68,8 @@ public class SessionLogEditor extends EditorPart {
     public static final int BUCKETS = 600;
     private static final ILog LOG = ILog.of(Platform.getBundle("org.stagecraft.replay.ui"));
     private static final AtomicInteger VIEWS = new AtomicInteger();
+    /** How often a log still being written is looked at, at the least. */
+    private static final int FOLLOW_MILLIS = 2000;
 
     private Path file;
     private final MessageColumns columns = new MessageColumns(DecoderExtensionRegistry.get());
@@ -92,6 +94,10 @@ public class SessionLogEditor extends EditorPart {
     private InspectorPanel inspector;
     private UiThrottle updates, densityUpdates;
     private volatile LogMessage lastPublished;
+    /** Following a spy log a running spy still writes: its size when last read, and the next look. */
+    private long followedSize = -1;
+    private int followDelayMillis = FOLLOW_MILLIS;
+    private boolean growing;
 
     @Override
     public void init(IEditorSite site, IEditorInput input) throws PartInitException {
@@ -132,6 +138,63 @@ public class SessionLogEditor extends EditorPart {
         processors = StreamProcessorExtensionRegistry.startAll(bus); // derived streams, as on the live bus
         registerSource();
         open(Long.MIN_VALUE);
+        followedSize = fileSize();
+        root.getDisplay().timerExec(followDelayMillis, this::follow);
+    }
+
+    /**
+     * A spy log without its summary is one the spy is probably still writing (the demo opens its
+     * live log): while it grows the editor reads it again, keeping the position and play, so the
+     * timeline and inspector fill in as the session runs. Reading a growing log means scanning it,
+     * so the next look waits at least four times as long as the last reading took. Following ends
+     * when the log is complete (the spy closed it) or the editor closes.
+     */
+    private void follow() {
+        if (timeline == null || timeline.canvas().isDisposed()) {
+            return;
+        }
+        SessionLog l = log;
+        long size = fileSize();
+        if (l != null && l.complete()) {
+            growing = false;
+            showStatus();
+            return; // whole: nothing more will come
+        }
+        if (size >= 0 && size != followedSize) {
+            growing = true;
+            Replayer old = replayer;
+            boolean playing = old != null && old.playing();
+            double speed = old != null ? old.speed() : 1;
+            long started = System.nanoTime();
+            reload();
+            Replayer now = replayer;
+            if (now != null) {
+                now.setSpeed(speed);
+                if (playing) {
+                    now.play();
+                }
+            }
+            followDelayMillis = (int) Math.max(FOLLOW_MILLIS, 4 * (System.nanoTime() - started) / 1_000_000);
+            if (log != null && log.complete()) {
+                growing = false; // the spy closed it while we looked
+                showStatus();
+                return;
+            }
+        }
+        timeline.canvas().getDisplay().timerExec(followDelayMillis, this::follow);
+    }
+
+    private long fileSize() {
+        try {
+            return Files.size(file);
+        } catch (IOException e) {
+            return -1;
+        }
+    }
+
+    /** Whether the editor is following a log that is still being written. */
+    public boolean following() {
+        return growing;
     }
 
     /** On the timeline: Space plays or pauses, Left and Right step, Home goes to the start. */
@@ -238,8 +301,9 @@ public class SessionLogEditor extends EditorPart {
             return;
         }
         status.setText(statusText());
-        status.setForeground(status.getDisplay().getSystemColor(
-                openError != null || (log != null && !log.problems().isEmpty()) ? SWT.COLOR_DARK_RED : SWT.COLOR_WIDGET_FOREGROUND));
+        // a log still being written lacks its summary by nature: that alone is no reason for alarm
+        boolean alarming = openError != null || (log != null && !log.problems().isEmpty() && !(growing && log.problems().size() == 1));
+        status.setForeground(status.getDisplay().getSystemColor(alarming ? SWT.COLOR_DARK_RED : SWT.COLOR_WIDGET_FOREGROUND));
         status.getParent().layout();
     }
 
@@ -261,6 +325,9 @@ public class SessionLogEditor extends EditorPart {
             s.append(String.format(Locale.ROOT, ", %,d bytes", Files.size(file)));
         } catch (IOException e) {
             // the size is only for information
+        }
+        if (growing) {
+            s.append(" — still being written: read again as it grows");
         }
         List<LogProblem> problems = l.problems();
         for (LogProblem p : problems) {
@@ -352,6 +419,7 @@ public class SessionLogEditor extends EditorPart {
     public void reload() {
         Replayer old = replayer;
         long position = old == null ? Long.MIN_VALUE : old.position();
+        followedSize = fileSize();
         closeLog();
         open(position);
     }

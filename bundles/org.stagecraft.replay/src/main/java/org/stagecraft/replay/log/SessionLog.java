@@ -24,6 +24,13 @@ public interface SessionLog extends AutoCloseable {
     /** Log time of the last message. */
     long endNanos();
 
+    /**
+     * Whether the file is known to be whole: false for a spy log without its summary, which is one
+     * a running spy is still writing (or one that was cut off); such a file may grow, and opening it
+     * again shows more.
+     */
+    boolean complete();
+
     /** Wire entries in the log (banners, Player messages, unframed pieces), from its index; events not counted. */
     long messageCount();
 

@@ -84,6 +84,11 @@ final class SpyLogSession implements SessionLog {
     }
 
     @Override
+    public boolean complete() {
+        return !reader.recovered();
+    }
+
+    @Override
     public long messageCount() {
         return reader.messageCount();
     }

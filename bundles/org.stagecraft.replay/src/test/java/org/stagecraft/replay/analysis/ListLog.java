@@ -87,6 +87,11 @@ final class ListLog implements SessionLog {
     }
 
     @Override
+    public boolean complete() {
+        return true;
+    }
+
+    @Override
     public long messageCount() {
         return messages.stream().filter(m -> m.dir() != null && m.kind() != LogMessage.Kind.DIAGNOSTIC).count();
     }

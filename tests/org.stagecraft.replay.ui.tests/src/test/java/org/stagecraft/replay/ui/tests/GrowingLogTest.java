@@ -1,6 +1,7 @@
 package org.stagecraft.replay.ui.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -65,6 +66,37 @@ class GrowingLogTest {
             assertTrue(bus == e.bus() && !bus.isClosed());
             SessionLogEditorTest.waitForTimeline(e);
             SessionLogEditorTest.waitForInspector(e);
+        }
+    }
+
+    @Test
+    void theEditorFollowsALogAsTheSpyWritesItUntilTheSpyClosesIt() throws Exception {
+        IFile file = TestLogs.project().getFile("followed.mcap");
+        var path = file.getLocation().toPath();
+        Files.deleteIfExists(path);
+        try (FileChannel ch = FileChannel.open(path, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+                SpyLogWriter w = SpyLogWriter.create(ch, Map.of(), 64 << 10);
+                TestLogs.Feeder feeder = new TestLogs.Feeder(SharedTraces.file(TestLogs.TRACE), w)) {
+            feeder.writeUntil(5);
+            w.flush();
+            file.refreshLocal(0, null);
+            SessionLogEditor e = SessionLogEditorTest.open(page, file);
+            long firstCount = e.log().messageCount();
+            assertFalse(e.log().complete());
+
+            feeder.writeUntil(15);
+            w.flush(); // no Reload pressed: the editor sees the file grow
+            Ui.spinUntil(() -> e.log() != null && e.log().messageCount() > firstCount, 30_000,
+                    "the editor read the grown log by itself");
+            assertTrue(e.following());
+            assertTrue(e.statusText().contains("still being written"), e.statusText());
+
+            feeder.writeUntil(20);
+            feeder.close();
+            w.close(); // the spy stops: summary and footer written
+            Ui.spinUntil(() -> e.log() != null && e.log().complete(), 30_000, "the editor read the finished log");
+            assertFalse(e.following(), "following ends with the complete log");
+            assertTrue(e.log().problems().isEmpty(), e.statusText());
         }
     }
 }
