@@ -46,15 +46,26 @@ final class Exchange {
                 }
             } catch (IOException e) {
                 sending.cancel(true);
-                throw e;
+                throw failed(e, matcher);
             }
             long sent;
             try {
                 sent = sending.get();
             } catch (ExecutionException e) {
-                throw e.getCause() instanceof IOException io ? io : new IOException(e.getCause());
+                throw failed(e.getCause() instanceof IOException io ? io : new IOException(e.getCause()), matcher);
             }
             return new ExchangeResult(sent, matcher.received(), matcher.matchesWhole(), matcher.firstDifference());
         }
+    }
+
+    /**
+     * The connection broke: say also what the other side had sent by then, since a peer that
+     * diverged from the recording (another program, another version) is the usual reason it gave up.
+     */
+    private static IOException failed(IOException e, ByteMatcher matcher) {
+        String seen = "after receiving " + matcher.received() + " bytes"
+                + (matcher.firstDifference() >= 0 ? ", which differ from the recording from byte " + matcher.firstDifference()
+                        : ", all as recorded");
+        return new IOException(e.getMessage() + " (" + seen + ")", e);
     }
 }

@@ -125,6 +125,22 @@ class RecordedPeersTest {
     }
 
     @Test
+    void aClientThatBreaksOffSaysWhereItLeftTheRecording() throws Exception {
+        try (RecordedPlayer player = player(16)) {
+            try (Socket s = new Socket(InetAddress.getLoopbackAddress(), player.ports().get(0))) {
+                byte[] other = conn.clientBytes().clone();
+                other[5] ^= 0x55; // another program: the same start, then something else
+                s.getInputStream().readNBytes(32); // the banner
+                s.getOutputStream().write(other, 0, 40);
+            } // and it goes away while the recorded Player still has data to send
+            RecordedPlayer.Served served = nextServed();
+            assertNotNull(served.error(), served.describe());
+            assertTrue(served.describe().contains("ended early: ") && served.describe().endsWith(
+                    "(after receiving 40 bytes, which differ from the recording from byte 5)"), served.describe());
+        }
+    }
+
+    @Test
     void aRobotWithNothingToTalkToGivesUpAfterItsDeadline() throws Exception {
         int port = Ports.free("127.0.0.1", 1).get(0);
         RecordedRobot robot = new RecordedRobot(recording, new InetSocketAddress("127.0.0.1", port), 1, p -> {
