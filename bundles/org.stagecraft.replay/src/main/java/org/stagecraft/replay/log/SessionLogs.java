@@ -8,6 +8,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.recording.trace.TraceReader;
@@ -22,7 +23,8 @@ import org.stagecraft.spy.log.SpyLogWriter;
  * sought and inspected by the same code, with memory flat in the log's size.
  */
 public final class SessionLogs {
-    private static final int HEAD = 512;
+    /** How much of a file tells its format. */
+    public static final int HEAD = 512;
 
     private SessionLogs() {
     }
@@ -58,18 +60,27 @@ public final class SessionLogs {
         } catch (NoSuchFileException e) {
             throw new NoSuchFileException(file.toString(), null, "no such file");
         }
+        return formatOf(head).orElseThrow(() -> new IOException(file + ": not a log Stagecraft can open (expected an MCAP"
+                + " spy log, a player-trace .trace.jsonl file or a Player writelog file)"));
+    }
+
+    /**
+     * What a file starting with {@code head} holds (its first {@value #HEAD} bytes, or all of a shorter
+     * file), or empty when it is none of the known formats. The one rule for both opening a file and
+     * recognising it (the IDE's content types ask this too), so whatever is offered can be opened.
+     */
+    public static Optional<LogFormat> formatOf(byte[] head) {
         if (SpyLogReader.isMcap(head)) {
-            return LogFormat.SPY_LOG;
+            return Optional.of(LogFormat.SPY_LOG);
         }
         String text = new String(head, StandardCharsets.UTF_8);
         if (text.startsWith("{") && text.contains("\"format\"") && text.contains("\"" + TraceReader.FORMAT + "\"")) {
-            return LogFormat.PLAYER_TRACE;
+            return Optional.of(LogFormat.PLAYER_TRACE);
         }
         if (WritelogImport.looksLikeWritelog(head)) {
-            return LogFormat.WRITELOG;
+            return Optional.of(LogFormat.WRITELOG);
         }
-        throw new IOException(file + ": not a log Stagecraft can open (expected an MCAP spy log, a player-trace"
-                + " .trace.jsonl file or a Player writelog file)");
+        return Optional.empty();
     }
 
     private interface Import {

@@ -250,6 +250,23 @@ class SessionLogsTest {
     }
 
     @Test
+    void theHeadAloneTellsTheFormatAsOpeningAFileDoes() throws IOException {
+        byte[] trace = Files.readAllBytes(Logs.trace(Logs.GT));
+        byte[] head = java.util.Arrays.copyOf(trace, Math.min(trace.length, SessionLogs.HEAD));
+        assertEquals(java.util.Optional.of(LogFormat.PLAYER_TRACE), SessionLogs.formatOf(head));
+        assertEquals(java.util.Optional.of(LogFormat.WRITELOG),
+                SessionLogs.formatOf("## Player version 3.1.1\n".getBytes(StandardCharsets.ISO_8859_1)));
+        // a writelog file without the "##" lines Player writes first is still one
+        assertEquals(java.util.Optional.of(LogFormat.WRITELOG), SessionLogs.formatOf(
+                "# a comment\n\n0.5 0 6665 sonar 0 1 1 1 0.5\n".getBytes(StandardCharsets.ISO_8859_1)));
+        assertEquals(java.util.Optional.empty(), SessionLogs.formatOf("[INFO] BUILD SUCCESS\n".getBytes(StandardCharsets.UTF_8)));
+        assertEquals(java.util.Optional.empty(), SessionLogs.formatOf(new byte[0]));
+        Path unknown = tmp.resolve("build.log");
+        Files.writeString(unknown, "[INFO] BUILD SUCCESS\n");
+        assertThrows(IOException.class, () -> SessionLogs.formatOf(unknown));
+    }
+
+    @Test
     void anImportedTraceLeavesNoTemporaryFileBehind() throws IOException {
         Path trace = Logs.trace(Logs.GT);
         Set<Path> before = tempImports();
