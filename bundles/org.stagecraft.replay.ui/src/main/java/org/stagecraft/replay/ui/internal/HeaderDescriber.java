@@ -1,83 +1,67 @@
 package org.stagecraft.replay.ui.internal;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.InputStreamReader;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
 import java.util.Hashtable;
+import java.util.Optional;
 
 import org.eclipse.core.runtime.IConfigurationElement;
+import org.eclipse.core.runtime.IExecutableExtension;
 import org.eclipse.core.runtime.QualifiedName;
 import org.eclipse.core.runtime.content.IContentDescription;
 import org.eclipse.core.runtime.content.ITextContentDescriber;
-import org.eclipse.core.runtime.IExecutableExtension;
+import org.stagecraft.replay.log.LogFormat;
+import org.stagecraft.replay.log.SessionLogs;
 
 /**
- * Recognises a text log by its first line, so a common extension ({@code .log}, {@code .jsonl}) opens in
- * the Session Log editor only when the file really is one: a Player writelog file starts with
- * {@code "## Player version"}, a recorded trace's header line holds {@code "format":"player-trace"}.
- * Parameters (plugin.xml): {@code startsWith} or {@code contains} (compared without whitespace).
+ * Recognises a log by its first bytes, so a common extension ({@code .log}, {@code .jsonl}) opens in the
+ * Session Log editor exactly when the core can open the file: the describer asks
+ * {@link SessionLogs#formatOf(byte[])} (the rule {@link SessionLogs#open} uses) rather than keeping a
+ * rule of its own. Parameter (plugin.xml): {@code format}, the {@link LogFormat} name the content type
+ * stands for.
  */
 public final class HeaderDescriber implements ITextContentDescriber, IExecutableExtension {
-    /** More than any header line we look for; a file whose first line is longer is not ours. */
-    static final int MAX_LINE = 4096;
-
-    private String startsWith;
-    private String contains;
+    private LogFormat format;
 
     public HeaderDescriber() {
     }
 
     /** For tests and plain use. */
-    public HeaderDescriber(String startsWith, String contains) {
-        this.startsWith = startsWith;
-        this.contains = contains == null ? null : contains.replaceAll("\\s", "");
+    public HeaderDescriber(LogFormat format) {
+        this.format = format;
     }
 
     @Override
     public void setInitializationData(IConfigurationElement config, String property, Object data) {
-        if (data instanceof Hashtable<?, ?> parameters) {
-            startsWith = (String) parameters.get("startsWith");
-            String c = (String) parameters.get("contains");
-            contains = c == null ? null : c.replaceAll("\\s", "");
+        if (data instanceof Hashtable<?, ?> parameters && parameters.get("format") instanceof String f) {
+            format = LogFormat.valueOf(f);
         }
     }
 
     @Override
     public int describe(InputStream contents, IContentDescription description) throws IOException {
-        return describe(new InputStreamReader(contents, StandardCharsets.UTF_8), description);
+        return matches(contents.readNBytes(SessionLogs.HEAD)) ? VALID : INVALID;
     }
 
     @Override
     public int describe(Reader contents, IContentDescription description) throws IOException {
-        return matches(firstLine(contents)) ? VALID : INVALID;
-    }
-
-    /** Whether a file starting with {@code line} is of this type. */
-    public boolean matches(String line) {
-        if (line == null) {
-            return false;
-        }
-        if (startsWith != null && !line.startsWith(startsWith)) {
-            return false;
-        }
-        return contains == null || line.replaceAll("\\s", "").contains(contains);
-    }
-
-    private static String firstLine(Reader in) throws IOException {
-        BufferedReader r = new BufferedReader(in, MAX_LINE);
-        char[] buf = new char[MAX_LINE];
+        // the formats are UTF-8 (traces) or ASCII (writelog): the characters' UTF-8 bytes are the file's
+        char[] chars = new char[SessionLogs.HEAD];
         int n = 0;
-        while (n < MAX_LINE) {
-            int c = r.read();
-            if (c < 0 || c == '\n' || c == '\r') {
-                break;
-            }
-            buf[n++] = (char) c;
+        for (int r; n < chars.length && (r = contents.read(chars, n, chars.length - n)) >= 0;) {
+            n += r;
         }
-        return new String(buf, 0, n).replace("\uFEFF", "");
+        byte[] bytes = new String(chars, 0, n).getBytes(StandardCharsets.UTF_8);
+        return matches(Arrays.copyOf(bytes, Math.min(bytes.length, SessionLogs.HEAD))) ? VALID : INVALID;
+    }
+
+    /** Whether a file starting with {@code head} is of this describer's format. */
+    public boolean matches(byte[] head) {
+        Optional<LogFormat> f = SessionLogs.formatOf(head);
+        return format != null && f.isPresent() && f.get() == format;
     }
 
     @Override
