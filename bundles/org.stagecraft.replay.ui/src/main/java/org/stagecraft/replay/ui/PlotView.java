@@ -30,6 +30,7 @@ import org.stagecraft.replay.analysis.SeriesText;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.replay.ui.internal.PlotCanvas;
+import org.stagecraft.replay.ui.internal.SharedLog;
 
 /**
  * Plots numeric fields of a Session Log over time: several series, each a stream and a field path
@@ -272,7 +273,8 @@ public class PlotView extends ViewPart {
         }
         int width = plot.plotWidth();
         SessionLogEditor e = editor;
-        SessionLog log = e == null ? null : e.log();
+        SharedLog shared = e == null ? null : e.sharedLog();
+        SessionLog log = shared == null ? null : shared.log();
         if (!always && log == sampledLog && Math.abs(width - sampledWidth) < 16) {
             return;
         }
@@ -298,6 +300,10 @@ public class PlotView extends ViewPart {
         long from = log.startNanos(), to = log.endNanos();
         var display = plot.control().getDisplay();
         sampler.execute(() -> {
+            // holding the log: a reload replacing it meanwhile closes it only after this pass
+            if (!shared.acquire()) {
+                return; // already replaced and closed: tick() samples the new one
+            }
             List<Series> out;
             String problem = null;
             try {
@@ -305,6 +311,8 @@ public class PlotView extends ViewPart {
             } catch (Exception ex) {
                 out = List.of();
                 problem = "Cannot read the log: " + ex.getMessage();
+            } finally {
+                shared.release();
             }
             List<Series> result = out;
             String message = problem;

@@ -22,7 +22,7 @@ import org.stagecraft.replay.ui.SessionLogEditor;
 /**
  * The editor's Export menu: CSV of a time range with the inspector's filter, the whole log as a Player
  * writelog file, the whole log as MCAP with decoded JSON channels (Foxglove). Asks where, then runs a
- * {@link LogExport} job and reports the result.
+ * {@link LogExport} job on the editor's file (its own reading, untouched by reloads) and reports the result.
  */
 public final class ExportMenu {
     private ExportMenu() {
@@ -89,7 +89,7 @@ public final class ExportMenu {
     }
 
     private static void run(Shell shell, SessionLogEditor editor, LogExport.Kind kind, ExportFilter filter, Path out) {
-        var job = LogExport.start(editor.log(), kind, filter, editor.columns().registry(), out);
+        var job = LogExport.start(editor.file(), kind, filter, editor.columns().registry(), out);
         job.addJobChangeListener(new JobChangeAdapter() {
             @Override
             public void done(IJobChangeEvent event) {

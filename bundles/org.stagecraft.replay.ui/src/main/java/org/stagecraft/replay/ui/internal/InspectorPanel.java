@@ -50,6 +50,7 @@ public final class InspectorPanel {
     private final java.util.function.LongSupplier replayPosition;
     private final AtomicLong generation = new AtomicLong();
     private final Color marked = new Color(255, 222, 222);
+    private SharedLog shared;
     private SessionLog log;
     private MessageColumns columns;
     private MessageFilter filter;
@@ -161,9 +162,13 @@ public final class InspectorPanel {
         return detailed;
     }
 
-    /** A new (or reloaded) log; pages around {@code position}. */
-    public void setLog(SessionLog newLog, long position) {
-        log = newLog;
+    /**
+     * A new (or reloaded) log; pages around {@code position}. Reads hold the log ({@link SharedLog}),
+     * so a reload that replaces it does not close it under a read still running.
+     */
+    public void setLog(SharedLog newLog, long position) {
+        shared = newLog;
+        log = newLog.log();
         window = new MessageWindow(java.util.List.of(), 0, true, true);
         table.setItemCount(0);
         pageAround(position, null);
@@ -232,40 +237,45 @@ public final class InspectorPanel {
 
     /** A window ending (earlier) or starting (later) at an entry. */
     private void pageAround(LogMessage edge, boolean later) {
-        SessionLog l = log;
+        SharedLog s = shared;
         MessageFilter f = filter;
-        load(() -> later ? MessageWindow.around(l, f, edge, 0, 2 * HALF_WINDOW, SCAN_LIMIT)
+        load(s, l -> later ? MessageWindow.around(l, f, edge, 0, 2 * HALF_WINDOW, SCAN_LIMIT)
                 : MessageWindow.around(l, f, edge, 2 * HALF_WINDOW, 1, SCAN_LIMIT), null);
     }
 
     private void pageAround(long position, LogMessage last) {
-        SessionLog l = log;
-        if (l == null) {
+        SharedLog s = shared;
+        if (s == null) {
             return;
         }
         MessageFilter f = filter;
         readAt = position;
-        load(() -> MessageWindow.around(l, f, position, HALF_WINDOW, HALF_WINDOW, SCAN_LIMIT), last);
+        load(s, l -> MessageWindow.around(l, f, position, HALF_WINDOW, HALF_WINDOW, SCAN_LIMIT), last);
     }
 
     private interface WindowRead {
-        MessageWindow read() throws IOException;
+        MessageWindow read(SessionLog log) throws IOException;
     }
 
     /** Reads a window off the UI thread; only the newest request's result is shown. */
-    private void load(WindowRead read, LogMessage select) {
+    private void load(SharedLog s, WindowRead read, LogMessage select) {
         long g = generation.incrementAndGet();
         loading = true;
         status.setText("reading\u2026");
         var display = table.getDisplay();
         reader.execute(() -> {
+            if (!s.acquire()) {
+                return; // replaced and closed meanwhile: the new log's own read is on its way
+            }
             MessageWindow w;
             String error = null;
             try {
-                w = read.read();
+                w = read.read(s.log());
             } catch (IOException | RuntimeException e) {
                 w = null;
                 error = "cannot read the log: " + e.getMessage();
+            } finally {
+                s.release();
             }
             MessageWindow result = w;
             String problem = error;

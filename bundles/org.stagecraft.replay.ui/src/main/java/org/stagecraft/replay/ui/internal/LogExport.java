@@ -16,11 +16,15 @@ import org.stagecraft.replay.export.ExportFilter;
 import org.stagecraft.replay.export.McapExport;
 import org.stagecraft.replay.export.WritelogExport;
 import org.stagecraft.replay.log.SessionLog;
+import org.stagecraft.replay.log.SessionLogs;
 import org.stagecraft.replay.writelog.WritelogWriter;
 
 /**
- * Runs an export of an open log in the background (a Job: the editor and the replay go on), through
- * org.stagecraft.replay.export, and says what was written in the job's result.
+ * Runs an export of a log file in the background (a Job: the editor and the replay go on), through
+ * org.stagecraft.replay.export, and says what was written in the job's result. The job opens the file
+ * itself and closes it when done: the editor's own log may be replaced at any moment (a reload, a
+ * growing file followed) and must not be closed under the export. An export that fails leaves no
+ * partial file behind and says what went wrong.
  */
 public final class LogExport {
     /** The three exports the editor offers. */
@@ -39,19 +43,37 @@ public final class LogExport {
     private LogExport() {
     }
 
-    /** A scheduled job writing {@code log} (what {@code filter} takes) as {@code kind} to {@code out}. */
-    public static Job start(SessionLog log, Kind kind, ExportFilter filter, CodecRegistry registry, Path out) {
-        Job job = Job.create("Export " + log.path().getFileName() + " to " + out.getFileName(), monitor -> {
-            try {
+    /** A scheduled job writing the log in {@code file} (what {@code filter} takes) as {@code kind} to {@code out}. */
+    public static Job start(Path file, Kind kind, ExportFilter filter, CodecRegistry registry, Path out) {
+        Job job = Job.create("Export " + file.getFileName() + " to " + out.getFileName(), monitor -> {
+            try (SessionLog log = SessionLogs.open(file)) {
                 String what = write(log, kind, filter, registry, out);
                 return new Status(IStatus.OK, BUNDLE, kind.title + ": " + what + " written to " + out);
             } catch (IOException | RuntimeException e) {
-                return new Status(IStatus.ERROR, BUNDLE, kind.title + " export to " + out + " failed: " + e.getMessage(), e);
+                String left = deletePartial(out);
+                return new Status(IStatus.ERROR, BUNDLE,
+                        kind.title + " export of " + file + " to " + out + " failed: " + describe(e) + left, e);
             }
         });
         job.setUser(true);
         job.schedule();
         return job;
+    }
+
+    /** The exception's class and message: some (ClosedChannelException) have no message at all. */
+    static String describe(Throwable e) {
+        String m = e.getMessage();
+        return e.getClass().getSimpleName() + (m == null || m.isBlank() ? "" : ": " + m);
+    }
+
+    /** Removes what a failed export wrote; says so when even that fails. */
+    private static String deletePartial(Path out) {
+        try {
+            Files.deleteIfExists(out);
+            return "";
+        } catch (IOException e) {
+            return " (the partial file could not be removed: " + describe(e) + ")";
+        }
     }
 
     static String write(SessionLog log, Kind kind, ExportFilter filter, CodecRegistry registry, Path out) throws IOException {
