@@ -16,10 +16,12 @@ import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.jobs.Job;
 import org.eclipse.swt.SWT;
+import org.eclipse.swt.SWTException;
 import org.eclipse.swt.custom.SashForm;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.ui.IEditorInput;
 import org.eclipse.ui.IEditorSite;
@@ -40,7 +42,10 @@ import org.stagecraft.replay.play.ReplayListener;
 import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.replay.ui.internal.EditorInputs;
 import org.stagecraft.replay.ui.internal.ExportMenu;
+import org.stagecraft.replay.ui.internal.FollowPace;
 import org.stagecraft.replay.ui.internal.InspectorPanel;
+import org.stagecraft.replay.ui.internal.LogExport;
+import org.stagecraft.replay.ui.internal.SharedLog;
 import org.stagecraft.replay.ui.internal.TimelineCanvas;
 import org.stagecraft.replay.ui.internal.TransportBar;
 import org.stagecraft.replay.ui.internal.UiThrottle;
@@ -68,8 +73,10 @@ public class SessionLogEditor extends EditorPart {
     public static final int BUCKETS = 600;
     private static final ILog LOG = ILog.of(Platform.getBundle("org.stagecraft.replay.ui"));
     private static final AtomicInteger VIEWS = new AtomicInteger();
-    /** How often a log still being written is looked at, at the least. */
+    /** How often a log still being written is looked at, at the most. */
     private static final int FOLLOW_MILLIS = 2000;
+    /** The next look at a growing log waits this many times what the last one cost. */
+    private static final int FOLLOW_FACTOR = 4;
 
     private Path file;
     private final MessageColumns columns = new MessageColumns(DecoderExtensionRegistry.get());
@@ -82,9 +89,18 @@ public class SessionLogEditor extends EditorPart {
     private StreamProcessors processors;
     private AutoCloseable source;
     private String sourceId;
+    /** The log on show with its readers' hold on it, and its replayer; replaced together, on the UI thread. */
+    private volatile SharedLog shared;
     private volatile SessionLog log;
     private volatile Replayer replayer;
-    private String openError;
+    /** Why the file could not be opened at all; why reading it again failed (the previous reading stays). */
+    private String openError, reopenError;
+    /** What stopped play, told by the replayer; cleared when play starts again. */
+    private volatile String playFailure;
+    /** The open under way in the background (UI thread only), and the number of the latest one asked for. */
+    private Job openJob;
+    private long openGeneration;
+    private boolean disposed;
     private Job densityJob;
     private volatile TimelineDensity density;
 
@@ -92,11 +108,12 @@ public class SessionLogEditor extends EditorPart {
     private Label status;
     private TimelineCanvas timeline;
     private InspectorPanel inspector;
-    private UiThrottle updates, densityUpdates;
+    private UiThrottle updates, densityUpdates, statusUpdates;
     private volatile LogMessage lastPublished;
-    /** Following a spy log a running spy still writes: its size when last read, and the next look. */
+    /** Following a spy log a running spy still writes: its size when last read, and when that look began. */
     private long followedSize = -1;
-    private int followDelayMillis = FOLLOW_MILLIS;
+    private long lastLookNanos;
+    private final FollowPace pace = new FollowPace(FOLLOW_MILLIS, FOLLOW_FACTOR);
     private boolean growing;
 
     @Override
@@ -133,55 +150,54 @@ public class SessionLogEditor extends EditorPart {
         installKeys(new Transport());
         updates = new UiThrottle(root.getDisplay(), 50, this::showReplayState);
         densityUpdates = new UiThrottle(root.getDisplay(), 250, this::showDensity);
+        statusUpdates = new UiThrottle(root.getDisplay(), 100, this::showStatus);
 
         SharedWorld.of(bus); // the world model listens from the first message: geometry replies come once
         processors = StreamProcessorExtensionRegistry.startAll(bus); // derived streams, as on the live bus
         registerSource();
-        open(Long.MIN_VALUE);
-        followedSize = fileSize();
-        root.getDisplay().timerExec(followDelayMillis, this::follow);
+        transport.setEnabled(false);
+        startOpen(false);
+        root.getDisplay().timerExec(FOLLOW_MILLIS, this::follow);
     }
 
     /**
      * A spy log without its summary is one the spy is probably still writing (the demo opens its
-     * live log): while it grows the editor reads it again, keeping the position and play, so the
-     * timeline and inspector fill in as the session runs. Reading a growing log means scanning it,
-     * so the next look waits at least four times as long as the last reading took. Following ends
-     * when the log is complete (the spy closed it) or the editor closes.
+     * live log): while it grows the editor reads it again in the background, keeping the position and
+     * play, so the timeline and inspector fill in as the session runs. A look costs a reopen (a scan of
+     * the file) and a timeline pass over it, so the next look waits for the pass to end and at least
+     * {@value #FOLLOW_FACTOR} times what both took ({@link FollowPace}). Following ends when the log is
+     * complete (the spy closed it) or the editor closes.
      */
     private void follow() {
-        if (timeline == null || timeline.canvas().isDisposed()) {
+        if (disposed || timeline.canvas().isDisposed()) {
             return;
         }
         SessionLog l = log;
-        long size = fileSize();
         if (l != null && l.complete()) {
             growing = false;
             showStatus();
             return; // whole: nothing more will come
         }
-        if (size >= 0 && size != followedSize) {
-            growing = true;
-            Replayer old = replayer;
-            boolean playing = old != null && old.playing();
-            double speed = old != null ? old.speed() : 1;
-            long started = System.nanoTime();
-            reload();
-            Replayer now = replayer;
-            if (now != null) {
-                now.setSpeed(speed);
-                if (playing) {
-                    now.play();
+        long next = FOLLOW_MILLIS;
+        if (openJob == null && !densityRunning()) {
+            long waited = (System.nanoTime() - lastLookNanos) / 1_000_000;
+            long due = pace.delayMillis();
+            if (waited < due) {
+                next = due - waited;
+            } else {
+                long size = fileSize();
+                if (size >= 0 && size != followedSize) {
+                    growing = true;
+                    startOpen(true);
                 }
             }
-            followDelayMillis = (int) Math.max(FOLLOW_MILLIS, 4 * (System.nanoTime() - started) / 1_000_000);
-            if (log != null && log.complete()) {
-                growing = false; // the spy closed it while we looked
-                showStatus();
-                return;
-            }
         }
-        timeline.canvas().getDisplay().timerExec(followDelayMillis, this::follow);
+        timeline.canvas().getDisplay().timerExec((int) Math.min(Integer.MAX_VALUE, Math.max(1, next)), this::follow);
+    }
+
+    private boolean densityRunning() {
+        Job j = densityJob;
+        return j != null && j.getState() != Job.NONE;
     }
 
     private long fileSize() {
@@ -222,53 +238,206 @@ public class SessionLogEditor extends EditorPart {
         source = BusSources.add(new BusSources.Source(id, "Log " + file.getFileName(), bus));
     }
 
-    /** Opens (or reopens) the file and starts at {@code position} (clamped to the log). */
-    private void open(long position) {
-        openError = null;
-        Replayer r = null;
-        try {
-            log = SessionLogs.open(file);
-            r = new Replayer(log, bus, ReplayClock.system());
-        } catch (IOException | RuntimeException e) {
-            closeLog();
-            openError = e.getMessage() == null ? e.toString() : e.getMessage();
-            LOG.warn("Session Log: cannot open " + file + ": " + openError);
+    /**
+     * Opens (or reopens) the file in the background: opening may scan a spy log without summary or
+     * import a whole trace or writelog file. The editor stays usable on what it shows meanwhile (the
+     * status says "reading…"); the new log and its replayer are swapped in on the UI thread
+     * ({@link #swapIn}). A newer open supersedes one under way, whose result is closed unseen.
+     */
+    private void startOpen(boolean followed) {
+        long g = ++openGeneration;
+        if (openJob != null) {
+            openJob.cancel();
         }
-        SessionLog l = log;
-        transport.setEnabled(l != null);
-        if (l == null) {
+        followedSize = fileSize();
+        lastLookNanos = System.nanoTime();
+        Display display = status.getDisplay();
+        Job job = Job.create("Reading " + file.getFileName(), (IProgressMonitor monitor) -> {
+            long started = System.nanoTime();
+            Opened o = Opened.of(file, bus);
+            long cost = System.nanoTime() - started;
+            try {
+                display.asyncExec(() -> swapIn(g, o, cost));
+            } catch (SWTException gone) {
+                o.discard(); // the workbench is closing
+            }
+            return Status.OK_STATUS;
+        });
+        job.setSystem(followed); // a first open (perhaps a long import) shows its progress; follow looks do not
+        openJob = job;
+        job.schedule();
+        showStatus();
+    }
+
+    /** What a background open produced: the log and its replayer, or why there is none. */
+    private record Opened(SharedLog shared, Replayer replayer, Exception error) {
+        static Opened of(Path file, StreamBus bus) {
+            SessionLog l = null;
+            try {
+                l = SessionLogs.open(file);
+                SharedLog s = new SharedLog(l, (closed, e) -> LOG.warn("Session Log: closing " + closed.path() + ": " + e));
+                return new Opened(s, new Replayer(l, bus, ReplayClock.system()), null);
+            } catch (IOException | RuntimeException e) {
+                if (l != null) {
+                    try {
+                        l.close();
+                    } catch (IOException ignored) {
+                        // the open already failed; that is what is reported
+                    }
+                }
+                return new Opened(null, null, e);
+            }
+        }
+
+        void discard() {
+            retire(replayer, shared);
+        }
+    }
+
+    /**
+     * On the UI thread: puts a freshly opened log in place of the one shown. The replay goes on where
+     * it was, at the same speed and playing if it played: just after the message last published (so
+     * nothing is published again), or at the same time after a seek. The old log is closed in the
+     * background once its readers are done.
+     */
+    private void swapIn(long g, Opened o, long costNanos) {
+        if (disposed || g != openGeneration) {
+            o.discard(); // superseded, or nobody left to show it
+            return;
+        }
+        openJob = null;
+        pace.reopened(costNanos);
+        if (o.error() != null) {
+            String why = LogExport.describe(o.error());
+            LOG.warn("Session Log: cannot " + (log == null ? "open " : "read again ") + file + ": " + why);
+            if (log == null) {
+                openError = o.error().getMessage() == null ? why : o.error().getMessage();
+            } else {
+                reopenError = why;
+            }
             showStatus();
             return;
         }
-        r.addListener(new ReplayListener() {
-            @Override
-            public void moved(long timeNanos, LogMessage last) {
-                lastPublished = last;
-                updates.request();
-            }
-
-            @Override
-            public void stateChanged(boolean playing, double speed) {
-                updates.request();
-            }
-        });
-        if (position != Long.MIN_VALUE) {
-            r.seek(position);
-        }
+        Replayer old = replayer;
+        SharedLog oldShared = shared;
+        Replayer r = o.replayer();
+        boolean play = old != null && carryOn(old, r);
+        r.addListener(new Listener(r));
+        SharedLog s = o.shared();
+        SessionLog l = s.log();
+        shared = s;
+        log = l;
         replayer = r;
+        openError = null;
+        reopenError = null;
+        playFailure = null;
+        if (play) {
+            r.play();
+        }
+        transport.setEnabled(true);
         timeline.setRange(l.startNanos(), l.endNanos());
         timeline.setStops(l.problems().stream().map(LogProblem::timeNanos).toList());
         timeline.setSnapshot(null);
-        startDensity(l);
-        inspector.setLog(l, r.position());
+        if (densityJob != null) {
+            densityJob.cancel(); // the old pass ends soon and lets go of the old log
+        }
+        startDensity(s);
+        inspector.setLog(s, r.position());
+        retire(old, oldShared);
+        if (l.complete()) {
+            growing = false; // the spy closed it while we looked
+        }
         showStatus();
         showReplayState();
     }
 
-    private void startDensity(SessionLog l) {
+    /**
+     * The new replayer takes over from the old: same speed, just past the same message. Says whether
+     * the old one was playing (the new one plays once it is in place).
+     */
+    private boolean carryOn(Replayer old, Replayer r) {
+        boolean playing = old.playing();
+        old.pause(); // nothing more from the old log: what it published last is final
+        r.setSpeed(old.speed());
+        LogMessage last = old.lastPublished();
+        try {
+            if (last != null) {
+                r.seekAfter(last); // the same file: the reopened log has the same message at the same place
+                lastPublished = last;
+                return playing;
+            }
+        } catch (RuntimeException e) {
+            LOG.warn("Session Log: " + file + " read again lacks the message last shown; going on at its time: " + e);
+        }
+        r.seek(old.position());
+        return playing;
+    }
+
+    /**
+     * Stops a replaced replayer and lets its log go, off the UI thread: stopping waits for the play
+     * thread, and the log closes when its last reader (timeline pass, inspector, plot) is done.
+     */
+    private static void retire(Replayer r, SharedLog s) {
+        if (r == null && s == null) {
+            return;
+        }
+        Job j = Job.create("Closing a replaced Session Log", (IProgressMonitor monitor) -> {
+            if (r != null) {
+                r.close();
+            }
+            if (s != null) {
+                s.retire();
+            }
+            return Status.OK_STATUS;
+        });
+        j.setSystem(true);
+        j.schedule();
+    }
+
+    /** Tells the editor what its replayer does; a replaced replayer's late news is ignored. */
+    private final class Listener implements ReplayListener {
+        private final Replayer r;
+
+        Listener(Replayer r) {
+            this.r = r;
+        }
+
+        @Override
+        public void moved(long timeNanos, LogMessage last) {
+            if (r == replayer) {
+                lastPublished = last;
+                updates.request();
+            }
+        }
+
+        @Override
+        public void stateChanged(boolean playing, double speed) {
+            if (r != replayer) {
+                return;
+            }
+            Exception failure = playing ? null : r.failure();
+            String before = playFailure;
+            if (failure != null) {
+                playFailure = LogExport.describe(failure);
+            } else if (playing) {
+                playFailure = null; // played again: the failure is history
+            }
+            if (!java.util.Objects.equals(before, playFailure)) {
+                statusUpdates.request();
+            }
+            updates.request();
+        }
+    }
+
+    private void startDensity(SharedLog s) {
+        SessionLog l = s.log();
         TimelineDensity d = new TimelineDensity(l.startNanos(), l.endNanos(), BUCKETS, columns);
         density = d;
         densityJob = Job.create("Reading the streams of " + file.getFileName(), (IProgressMonitor monitor) -> {
+            if (!s.acquire()) {
+                return Status.CANCEL_STATUS; // replaced and closed before the pass began
+            }
+            long started = System.nanoTime();
             monitor.beginTask("Reading " + file.getFileName(), 1000);
             int[] done = { 0 };
             try {
@@ -280,7 +449,10 @@ public class SessionLogEditor extends EditorPart {
                 }, monitor::isCanceled);
             } catch (IOException | RuntimeException e) {
                 LOG.warn("Session Log: timeline of " + file + " stopped: " + e.getMessage());
+            } finally {
+                s.release();
             }
+            pace.timelinePassed(System.nanoTime() - started);
             densityUpdates.request();
             monitor.done();
             return Status.OK_STATUS;
@@ -302,16 +474,19 @@ public class SessionLogEditor extends EditorPart {
         }
         status.setText(statusText());
         // a log still being written lacks its summary by nature: that alone is no reason for alarm
-        boolean alarming = openError != null || (log != null && !log.problems().isEmpty() && !(growing && log.problems().size() == 1));
+        boolean alarming = openError != null || reopenError != null || playFailure != null || (log != null && !log.problems().isEmpty() && !(growing && log.problems().size() == 1));
         status.setForeground(status.getDisplay().getSystemColor(alarming ? SWT.COLOR_DARK_RED : SWT.COLOR_WIDGET_FOREGROUND));
         status.getParent().layout();
     }
 
-    /** What the status line says: the log, and where a damaged one stopped. */
+    /**
+     * What the status line says: the log, whether it is being read (again), where a damaged one
+     * stopped, and what stopped play.
+     */
     public String statusText() {
         SessionLog l = log;
         if (l == null) {
-            return "Cannot open " + file + ": " + openError;
+            return openError == null ? "Reading " + file + "\u2026" : "Cannot open " + file + ": " + openError;
         }
         StringBuilder s = new StringBuilder();
         s.append(switch (l.format()) {
@@ -328,6 +503,16 @@ public class SessionLogEditor extends EditorPart {
         }
         if (growing) {
             s.append(" — still being written: read again as it grows");
+        }
+        if (openJob != null) {
+            s.append(" — reading\u2026");
+        }
+        if (reopenError != null) {
+            s.append("\nCannot read it again: ").append(reopenError);
+        }
+        String failure = playFailure;
+        if (failure != null) {
+            s.append("\nReplay stopped: ").append(failure);
         }
         List<LogProblem> problems = l.problems();
         for (LogProblem p : problems) {
@@ -374,9 +559,19 @@ public class SessionLogEditor extends EditorPart {
         return file;
     }
 
-    /** The open log, or null when the file could not be opened at all. */
+    /** The log on show, or null while the file is first read or when it could not be opened at all. */
     public SessionLog log() {
         return log;
+    }
+
+    /** The log on show with its readers' hold on it: read it only between acquire and release. */
+    public SharedLog sharedLog() {
+        return shared;
+    }
+
+    /** Whether the file is being read (opened, or opened again) in the background. UI thread. */
+    public boolean reading() {
+        return openJob != null;
     }
 
     public Replayer replayer() {
@@ -415,13 +610,12 @@ public class SessionLogEditor extends EditorPart {
         return j != null && j.getState() == Job.NONE && j.getResult() != null;
     }
 
-    /** Reads the file again, keeping the replay position (a growing log shows what was added). */
+    /**
+     * Reads the file again in the background, keeping the replay position (a growing log shows what was
+     * added); returns at once, the log on show stays usable until the new reading replaces it.
+     */
     public void reload() {
-        Replayer old = replayer;
-        long position = old == null ? Long.MIN_VALUE : old.position();
-        followedSize = fileSize();
-        closeLog();
-        open(position);
+        startOpen(false);
     }
 
     /** Opens a new Robot View following this log's replay. */
@@ -526,36 +720,23 @@ public class SessionLogEditor extends EditorPart {
         }
     }
 
-    private void closeLog() {
-        Job j = densityJob;
-        if (j != null) {
-            j.cancel();
-            try {
-                j.join(5_000, null);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
-        Replayer r = replayer;
-        replayer = null;
-        if (r != null) {
-            r.close();
-        }
-        SessionLog l = log;
-        log = null;
-        if (l != null) {
-            try {
-                l.close();
-            } catch (IOException e) {
-                LOG.warn("Session Log: closing " + file + ": " + e.getMessage());
-            }
-        }
-    }
-
     @Override
     public void dispose() {
-        closeLog();
-        reader.shutdownNow();
+        // nothing here waits: jobs are cancelled and end by themselves, logs close when their readers are done
+        disposed = true;
+        openGeneration++;
+        if (openJob != null) {
+            openJob.cancel();
+            openJob = null;
+        }
+        if (densityJob != null) {
+            densityJob.cancel();
+        }
+        retire(replayer, shared);
+        replayer = null;
+        shared = null;
+        log = null;
+        reader.shutdown(); // reads queued still run, holding the log, and show nothing
         try {
             if (source != null) {
                 source.close(); // views following this log go back to Live

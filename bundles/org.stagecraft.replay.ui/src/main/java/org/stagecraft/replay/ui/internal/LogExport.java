@@ -46,13 +46,17 @@ public final class LogExport {
     /** A scheduled job writing the log in {@code file} (what {@code filter} takes) as {@code kind} to {@code out}. */
     public static Job start(Path file, Kind kind, ExportFilter filter, CodecRegistry registry, Path out) {
         Job job = Job.create("Export " + file.getFileName() + " to " + out.getFileName(), monitor -> {
-            try (SessionLog log = SessionLogs.open(file)) {
+            SessionLog log;
+            try {
+                log = SessionLogs.open(file);
+            } catch (IOException | RuntimeException e) {
+                return failed(kind, file, out, e, ""); // nothing written: a file already at out stays
+            }
+            try (log) {
                 String what = write(log, kind, filter, registry, out);
                 return new Status(IStatus.OK, BUNDLE, kind.title + ": " + what + " written to " + out);
             } catch (IOException | RuntimeException e) {
-                String left = deletePartial(out);
-                return new Status(IStatus.ERROR, BUNDLE,
-                        kind.title + " export of " + file + " to " + out + " failed: " + describe(e) + left, e);
+                return failed(kind, file, out, e, deletePartial(out));
             }
         });
         job.setUser(true);
@@ -60,8 +64,12 @@ public final class LogExport {
         return job;
     }
 
+    private static IStatus failed(Kind kind, Path file, Path out, Exception e, String left) {
+        return new Status(IStatus.ERROR, BUNDLE, kind.title + " export of " + file + " to " + out + " failed: " + describe(e) + left, e);
+    }
+
     /** The exception's class and message: some (ClosedChannelException) have no message at all. */
-    static String describe(Throwable e) {
+    public static String describe(Throwable e) {
         String m = e.getMessage();
         return e.getClass().getSimpleName() + (m == null || m.isBlank() ? "" : ": " + m);
     }

@@ -50,7 +50,7 @@ class ExportActionsTest {
         Path dir = Files.createTempDirectory("replay-ui-export");
         try {
             Path csv = dir.resolve("pose.csv");
-            IStatus s = finish(LogExport.start(e.log(), LogExport.Kind.CSV, filter, e.columns().registry(), csv));
+            IStatus s = finish(LogExport.start(e.file(), LogExport.Kind.CSV, filter, e.columns().registry(), csv));
             assertTrue(s.isOK(), s.getMessage());
             List<String> lines = Files.readAllLines(csv, StandardCharsets.UTF_8);
             assertTrue(lines.get(0).startsWith("time,conn,dir,iface,index,type,subtype"), lines.get(0));
@@ -60,7 +60,7 @@ class ExportActionsTest {
             assertTrue(s.getMessage().contains((lines.size() - 1) + " rows"), s.getMessage());
 
             Path writelog = dir.resolve("whole.log");
-            s = finish(LogExport.start(e.log(), LogExport.Kind.WRITELOG, ExportFilter.all(), e.columns().registry(), writelog));
+            s = finish(LogExport.start(e.file(), LogExport.Kind.WRITELOG, ExportFilter.all(), e.columns().registry(), writelog));
             assertTrue(s.isOK(), s.getMessage());
             assertTrue(Files.readString(writelog).startsWith("## Player version"), "a writelog header");
             // a writelog file (named as Player names them) opens in the Session Log editor by its header
@@ -72,14 +72,14 @@ class ExportActionsTest {
             file.refreshLocal(0, null);
             var part = org.eclipse.ui.ide.IDE.openEditor(page, file);
             assertTrue(part instanceof SessionLogEditor, "the default editor of a writelog file: " + part);
-            SessionLogEditor w = (SessionLogEditor) part;
+            SessionLogEditor w = SessionLogEditorTest.waitForOpen((SessionLogEditor) part);
             assertEquals(LogFormat.WRITELOG, w.log().format(), w.statusText());
             SessionLogEditorTest.waitForTimeline(w);
             assertTrue(w.timeline().trackLabels().stream().anyMatch(t -> t.startsWith("laser:0 DATA")), w.timeline().trackLabels().toString());
             page.closeEditor(w, false);
 
             Path mcap = dir.resolve("whole.mcap");
-            s = finish(LogExport.start(e.log(), LogExport.Kind.MCAP, ExportFilter.all(), e.columns().registry(), mcap));
+            s = finish(LogExport.start(e.file(), LogExport.Kind.MCAP, ExportFilter.all(), e.columns().registry(), mcap));
             assertTrue(s.isOK(), s.getMessage());
             try (SessionLog back = SessionLogs.open(mcap)) {
                 assertEquals(LogFormat.SPY_LOG, back.format(), "the export is also a spy log");

@@ -58,7 +58,10 @@ class GrowingLogTest {
 
             feeder.writeUntil(20);
             w.flush();
+            var before = e.log();
             Ui.press(e.transport().control(), "Reload");
+            assertTrue(e.reading(), "read again in the background");
+            Ui.spinUntil(() -> !e.reading() && e.log() != before, 60_000, "the log read again");
             assertTrue(e.log().endNanos() - e.log().startNanos() > 15_000_000_000L, "the log grew: " + e.statusText());
             assertTrue(e.log().messageCount() > firstCount);
             assertEquals(position, e.replayer().position(), "the replay stays where it was");

@@ -60,7 +60,13 @@ class SessionLogEditorTest {
     static SessionLogEditor open(IWorkbenchPage page, IFile file) throws Exception {
         IEditorPart e = IDE.openEditor(page, file, SessionLogEditor.ID, true);
         assertTrue(e instanceof SessionLogEditor, "opened in the Session Log editor: " + e);
-        return (SessionLogEditor) e;
+        return waitForOpen((SessionLogEditor) e);
+    }
+
+    /** The editor reads its file in the background: waits until that reading is in place (or failed). */
+    static SessionLogEditor waitForOpen(SessionLogEditor e) {
+        Ui.spinUntil(() -> !e.reading(), 60_000, "the editor to read " + e.file());
+        return e;
     }
 
     static void waitForTimeline(SessionLogEditor e) {
@@ -234,7 +240,7 @@ class SessionLogEditorTest {
         try {
             IEditorPart part = IDE.openEditorOnFileStore(page, EFS.getLocalFileSystem().getStore(cut.toUri()));
             assertTrue(part instanceof SessionLogEditor, "an .mcap from outside the workspace opens in the Session Log editor: " + part);
-            SessionLogEditor e = (SessionLogEditor) part;
+            SessionLogEditor e = waitForOpen((SessionLogEditor) part);
             assertNotNull(e.log(), e.statusText());
             List<LogProblem> problems = e.log().problems();
             assertFalse(problems.isEmpty(), "the cut is reported");
