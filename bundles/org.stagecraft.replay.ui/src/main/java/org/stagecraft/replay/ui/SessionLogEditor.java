@@ -65,7 +65,8 @@ import org.stagecraft.views.RobotView;
  * background pass, the inspector a window read around the replay position. The replay thread only
  * asks for UI updates ({@link UiThrottle}); it never waits for the display. A file that cannot be
  * read completely (truncated, corrupt, still being written) opens with what is readable and says
- * where it stopped; Reload reads it again.
+ * where it stopped; Reload reads it again. Opening and reopening run in a background job; the UI
+ * thread only swaps the result in and never waits for a job.
  */
 public class SessionLogEditor extends EditorPart {
     public static final String ID = "org.stagecraft.replay.ui.sessionLogEditor";
