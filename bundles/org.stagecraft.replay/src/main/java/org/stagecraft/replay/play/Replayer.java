@@ -36,6 +36,7 @@ public final class Replayer implements AutoCloseable {
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition wake = lock.newCondition();
     private final Thread thread;
+    private final DeviceReplies deviceReplies;
 
     // guarded by lock
     private boolean playing;
@@ -58,6 +59,7 @@ public final class Replayer implements AutoCloseable {
         this.clock = clock;
         this.cursor = log.cursor(log.startNanos());
         this.position = log.startNanos();
+        this.deviceReplies = new DeviceReplies(log);
         this.thread = Thread.ofPlatform().daemon().name("stagecraft-replay " + log.path().getFileName())
                 .unstarted(this::run);
         thread.start();
@@ -145,6 +147,7 @@ public final class Replayer implements AutoCloseable {
             taken = null;
             lastPublished = null;
             position = at;
+            publishDeviceReplies(at);
             changed();
         } finally {
             lock.unlock();
@@ -161,6 +164,7 @@ public final class Replayer implements AutoCloseable {
             taken = null;
             lastPublished = null;
             position = message.timeNanos();
+            publishDeviceReplies(message.timeNanos());
             changed();
         } finally {
             lock.unlock();
@@ -308,6 +312,7 @@ public final class Replayer implements AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+        deviceReplies.close();
         try {
             cursor.close();
         } catch (IOException e) {
@@ -398,6 +403,21 @@ public final class Replayer implements AutoCloseable {
             taken = null;
             io(cursor::previous);
         }
+    }
+
+    /**
+     * After a jump, what a live view would know by then: the latest geometry and configuration
+     * replies of each device before the new position (see {@link DeviceReplies}).
+     */
+    private void publishDeviceReplies(long before) {
+        for (LogMessage m : deviceReplies.before(before)) {
+            m.toStreamMessage().ifPresent(bus::publish);
+        }
+    }
+
+    /** For tests: waits until the pass that finds device replies has read the log. */
+    boolean awaitDeviceReplies(long millis) throws InterruptedException {
+        return deviceReplies.awaitDone(millis);
     }
 
     private void publish(LogMessage m) {

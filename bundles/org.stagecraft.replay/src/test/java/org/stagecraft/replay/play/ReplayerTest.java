@@ -1,5 +1,6 @@
 package org.stagecraft.replay.play;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -9,6 +10,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Map;
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CountDownLatch;
@@ -20,6 +23,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import org.stagecraft.player.codec.PlayerEncoder;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.Logs;
 import org.stagecraft.replay.log.SessionLog;
@@ -279,14 +283,15 @@ class ReplayerTest {
     }
 
     @Test
-    void aSeekMovesWithoutPublishingAndTheNextStepIsTheFirstMessageAfter() throws Exception {
+    void aSeekPublishesOnlyWhatDescribesTheDevicesAndTheNextStepIsTheFirstMessageAfter() throws Exception {
         ManualClock clock = new ManualClock(false, 0);
         BlockingQueue<Arrival> arrivals = listen(clock);
         try (Replayer r = new Replayer(log, bus, clock)) {
+            assertTrue(r.awaitDeviceReplies(30_000));
             LogMessage target = all.get(all.size() / 2);
-            r.seek(target.timeNanos());
+            seekAndDrain(r, target, arrivals);
             assertEquals(target.timeNanos(), r.position());
-            assertTrue(arrivals.isEmpty());
+            assertNull(arrivals.poll(100, TimeUnit.MILLISECONDS), "a seek publishes no recorded traffic");
             LogMessage next = r.stepForward();
             assertEquals(target.timeNanos(), next.timeNanos());
             LogMessage other = all.get(all.size() / 3);
@@ -300,13 +305,59 @@ class ReplayerTest {
         }
     }
 
+    /** The latest reply describing each device (geometry, configuration) before {@code t}, read from the log here. */
+    private Map<List<Integer>, LogMessage> deviceRepliesBefore(long t) {
+        Map<List<Integer>, LogMessage> latest = new HashMap<>();
+        for (LogMessage m : all) {
+            if (m.timeNanos() >= t) {
+                break;
+            }
+            if (m.kind() == LogMessage.Kind.FRAME && m.dir() == org.stagecraft.player.wire.Direction.SERVER_TO_CLIENT) {
+                var h = m.decoded().header();
+                if (h.type() == 4 && h.interf() != 1) { // RESP_ACK of a device interface (not "player")
+                    latest.put(List.of(m.connection().id(), h.interf(), h.index(), h.subtype()), m);
+                }
+            }
+        }
+        return latest;
+    }
+
+    /** Seeks to {@code m} and takes what the seek published: the device replies before it. */
+    private void seekAndDrain(Replayer r, LogMessage m, BlockingQueue<Arrival> arrivals) throws Exception {
+        assertTrue(r.awaitDeviceReplies(30_000), "the device replies were read");
+        r.seekTo(m);
+        Map<List<Integer>, LogMessage> want = deviceRepliesBefore(m.timeNanos());
+        for (Arrival a : take(arrivals, want.size())) {
+            SpyMessage got = (SpyMessage) a.message().payload();
+            var h = got.message().header();
+            LogMessage w = want.get(List.of(got.connection().id(), h.interf(), h.index(), h.subtype()));
+            assertTrue(w != null, "an unexpected message after a seek: " + h);
+            assertArrayEquals(PlayerEncoder.encodeBody(w.decoded().body()), PlayerEncoder.encodeBody(got.message().body()),
+                    "the device's latest reply before the seek");
+        }
+    }
+
+    @Test
+    void aSeekIntoTheMiddleTellsTheViewsWhereTheSensorsAre() throws Exception {
+        ManualClock clock = new ManualClock(false, 0);
+        BlockingQueue<Arrival> arrivals = listen(clock);
+        try (Replayer r = new Replayer(log, bus, clock)) {
+            LogMessage middle = all.get(all.size() / 2);
+            Map<List<Integer>, LogMessage> want = deviceRepliesBefore(middle.timeNanos());
+            // the recorded client asked position2d, laser and both rangers (sonar, laser) for their geometry
+            assertTrue(want.keySet().stream().map(k -> k.get(1)).collect(java.util.stream.Collectors.toSet())
+                    .containsAll(List.of(4, 6, 62)), want.keySet().toString());
+            seekAndDrain(r, middle, arrivals);
+        }
+    }
+
     @Test
     void pauseStopsPublishingAndPlayGoesOnFromTheSameMessage() throws Exception {
         ManualClock clock = new ManualClock(true, 0);
         BlockingQueue<Arrival> arrivals = listen(clock);
         int n = pacedPair(100);
         try (Replayer r = new Replayer(log, bus, clock)) {
-            r.seekTo(firstWithStream(n));
+            seekAndDrain(r, firstWithStream(n), arrivals);
             r.play(); // the first message is due at once
             assertSameMessage(firstWithStreamMessage(n), arrivals.poll(30, TimeUnit.SECONDS).message(), "first played");
             clock.awaitBlocked(1); // waiting for the next message's time
@@ -330,7 +381,7 @@ class ReplayerTest {
         BlockingQueue<Arrival> arrivals = listen(clock);
         int n = pacedPair(200);
         try (Replayer r = new Replayer(log, bus, clock)) {
-            r.seekTo(firstWithStream(n));
+            seekAndDrain(r, firstWithStream(n), arrivals);
             r.play();
             assertSameMessage(firstWithStreamMessage(n), arrivals.poll(30, TimeUnit.SECONDS).message(), "first");
             long gap = firstWithStream(n + 1).timeNanos() - firstWithStream(n).timeNanos();
