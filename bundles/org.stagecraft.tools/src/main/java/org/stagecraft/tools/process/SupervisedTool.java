@@ -272,6 +272,10 @@ public final class SupervisedTool {
             }
         }
         run.exitCode = code;
+        synchronized (this) {
+            // before anyone can see the run as ended: a start that fails on it reports this code
+            lastExitCode = code;
+        }
         run.exited.countDown();
         exited(run, code);
     }
