@@ -128,6 +128,91 @@ class ExportAndReplayCommandsTest {
         }
     }
 
+    /** Connects, sends the recorded client bytes and reads until the server closes. */
+    private static CompletableFuture<byte[]> client(int port, byte[] send) throws IOException {
+        Socket s = new Socket(InetAddress.getLoopbackAddress(), port);
+        return CompletableFuture.supplyAsync(() -> {
+            try (s) {
+                s.getOutputStream().write(send);
+                return s.getInputStream().readAllBytes();
+            } catch (IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        });
+    }
+
+    @Test
+    void replayServesTwoRecordedConnectionsOfOnePortToTwoClientsEachItsOwnBytes() throws Exception {
+        Path sonar = SharedTraces.file("pioneer-laser-sonar.sonar.trace.jsonl");
+        List<RecordedConnection> recorded = RecordedConnection.read(sonar);
+        assertEquals(2, recorded.size(), "the sonar trace has two clients on one port");
+        assertTrue(!java.util.Arrays.equals(recorded.get(0).serverBytes(), recorded.get(1).serverBytes()),
+                "the two connections differ, so a mix-up would show");
+        Watched out = new Watched();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        CompletableFuture<Integer> code = CompletableFuture.supplyAsync(() -> Main.run(
+                new String[] { "replay", sonar.toString(), "--to", "6665=127.0.0.1:0", "--speed", "64" },
+                new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8)));
+        int port = out.port.get(30, TimeUnit.SECONDS);
+        // the n-th client accepted gets the port's n-th recorded connection: connect one after the other
+        CompletableFuture<byte[]> first = client(port, recorded.get(0).clientBytes());
+        CompletableFuture<byte[]> second = client(port, recorded.get(1).clientBytes());
+        assertArrayEquals(recorded.get(0).serverBytes(), first.get(60, TimeUnit.SECONDS), "first client: connection 1's server bytes");
+        assertArrayEquals(recorded.get(1).serverBytes(), second.get(60, TimeUnit.SECONDS), "second client: connection 2's server bytes");
+        assertEquals(0, code.get(60, TimeUnit.SECONDS), err.toString(StandardCharsets.UTF_8));
+        assertEquals("", err.toString(StandardCharsets.UTF_8));
+        assertTrue(out.text().contains("recorded port 6665 (2 connections) listening on 127.0.0.1:" + port), out.text());
+        assertEquals(2, Pattern.compile("exactly what the recorded robot program sent").matcher(out.text()).results().count(),
+                out.text());
+    }
+
+    /** A stand-in connection: the mapping looks at ports only. */
+    private record Port(int port) implements org.stagecraft.demo.recorded.PlayableConnection {
+        @Override
+        public int conn() {
+            return port;
+        }
+
+        @Override
+        public double length() {
+            return 0;
+        }
+
+        @Override
+        public org.stagecraft.demo.recorded.ChunkSource openServer() {
+            return org.stagecraft.demo.recorded.ChunkSource.of(List.of());
+        }
+
+        @Override
+        public org.stagecraft.demo.recorded.ChunkSource openClient() {
+            return openServer();
+        }
+    }
+
+    @Test
+    void toMapsAGivenRecordedPortAndTheRestInTheLogsOrder() throws IOException {
+        java.util.Map<Integer, List<Port>> byPort = new java.util.LinkedHashMap<>();
+        byPort.put(6665, List.of(new Port(6665)));
+        byPort.put(6666, List.of(new Port(6666), new Port(6666)));
+        List<org.stagecraft.demo.recorded.RecordedPlayer.Listener> ls = ReplayCommand.listeners(
+                List.of("6666=127.0.0.1:7001", "7000"), byPort);
+        assertEquals(2, ls.size());
+        assertEquals(6666, ls.get(0).connections().get(0).port(), "PORT= picks the recorded port");
+        assertEquals(2, ls.get(0).connections().size());
+        assertEquals(7001, ls.get(0).address().getPort());
+        assertEquals("127.0.0.1", ls.get(0).address().getHostString());
+        assertEquals(6665, ls.get(1).connections().get(0).port(), "a bare address takes the first recorded port in order");
+        assertEquals(7000, ls.get(1).address().getPort());
+        assertTrue(ls.get(1).address().getAddress().isLoopbackAddress(), "loopback when no host is given");
+
+        IllegalArgumentException twice = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> ReplayCommand.listeners(List.of("6665=127.0.0.1:7001", "6665=127.0.0.1:7002"), byPort));
+        assertTrue(twice.getMessage().contains("recorded port 6665 is given twice"), twice.getMessage());
+        IllegalArgumentException badPort = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> ReplayCommand.listeners(List.of("6665=127.0.0.1:http"), byPort));
+        assertTrue(badPort.getMessage().contains("'http' is not a port number"), badPort.getMessage());
+    }
+
     @Test
     void replaySaysWhichPortIsInUseAndWhichFileIsMissing() throws IOException {
         try (ServerSocket busy = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
