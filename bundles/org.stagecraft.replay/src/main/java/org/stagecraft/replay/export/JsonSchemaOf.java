@@ -16,8 +16,9 @@ import org.stagecraft.player.codec.MessageBody;
  * stream so that each of them validates: one stream can carry several layouts (a NACK with and
  * without a body, lists of different element shapes), so the schemas of its messages are merged
  * into their union. Objects have every member any message had and require those all of them had;
- * list items are the union of every element; integers and floats together are numbers; a value
- * that was of different kinds is {@code anyOf} them.
+ * list items are the union of every element; integers and floats together are numbers; a float
+ * that was NaN or infinite (null in the JSON) adds null; a value that was of different kinds is
+ * {@code anyOf} them.
  */
 final class JsonSchemaOf {
     private JsonSchemaOf() {
@@ -25,7 +26,10 @@ final class JsonSchemaOf {
 
     /** The schema of one value, or of several merged. */
     static final class Node {
-        /** "integer", "number", "string", "bytes", "object", "array", in the order first met. */
+        /**
+         * "integer", "number", "null" (a NaN or infinity, which JSON writes as null), "string",
+         * "bytes", "object", "array", in the order first met.
+         */
         private final Set<String> kinds = new LinkedHashSet<>();
         private final Map<String, Node> properties = new LinkedHashMap<>();
         /** Members every merged object had; null until an object has been merged. */
@@ -194,12 +198,12 @@ final class JsonSchemaOf {
 
         @Override
         public void float32(String name, float value) {
-            add(name, Node.of("number"));
+            add(name, Node.of(Float.isFinite(value) ? "number" : "null"));
         }
 
         @Override
         public void float64(String name, double value) {
-            add(name, Node.of("number"));
+            add(name, Node.of(Double.isFinite(value) ? "number" : "null"));
         }
 
         @Override

@@ -361,8 +361,13 @@ class ExportTest {
                     out.append(where).append(": not a string; ");
                 }
             }
+            case "null" -> {
+                if (!v.isJsonNull()) {
+                    out.append(where).append(": not null; ");
+                }
+            }
             case "integer", "number" -> {
-                if (!(v.isJsonNull() || v.isJsonPrimitive() && v.getAsJsonPrimitive().isNumber())
+                if (!(v.isJsonPrimitive() && v.getAsJsonPrimitive().isNumber())
                         || type.equals("integer") && v.getAsString().contains(".")) {
                     out.append(where).append(": not ").append(type).append("; ");
                 }
