@@ -117,6 +117,7 @@ final class SpyLogCursor implements LogCursor {
 
     /** Reads the entries just before the position into {@link #back}; false at the start of the log. */
     private boolean fillBack() throws IOException {
+        boolean widened = false;
         while (true) {
             long from = posTime - backSpan;
             boolean toStart = from <= startNanos || from > posTime;
@@ -145,11 +146,17 @@ final class SpyLogCursor implements LogCursor {
                 backSpan = Math.max(1, backSpan / 2);
             }
             if (!back.isEmpty()) {
+                if (widened) {
+                    // the span grew to cross a quiet stretch; a busy stretch behind it must not
+                    // pay for reading that far back on every later step
+                    backSpan = FIRST_BACK_SPAN;
+                }
                 return true;
             }
             if (toStart) {
                 return false;
             }
+            widened = true;
             backSpan = backSpan > Long.MAX_VALUE / 4 ? Long.MAX_VALUE / 2 : backSpan * 4;
         }
     }

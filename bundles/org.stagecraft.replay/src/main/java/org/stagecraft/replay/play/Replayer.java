@@ -32,9 +32,11 @@ public final class Replayer implements AutoCloseable {
     private final ReplayClock clock;
     private final LogCursor cursor;
     private final List<ReplayListener> listeners = new CopyOnWriteArrayList<>();
+    private final java.util.concurrent.atomic.AtomicLong listenerFailures = new java.util.concurrent.atomic.AtomicLong();
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition wake = lock.newCondition();
     private final Thread thread;
+    private final DeviceReplies deviceReplies;
 
     // guarded by lock
     private boolean playing;
@@ -47,7 +49,9 @@ public final class Replayer implements AutoCloseable {
     private long generation;
     private long anchorWall;
     private long anchorLog;
-    private IOException failure;
+    private Exception failure;
+    /** The message last published, with the cursor right after it; null after a seek. */
+    private LogMessage lastPublished;
 
     public Replayer(SessionLog log, StreamBus bus, ReplayClock clock) throws IOException {
         this.log = log;
@@ -55,6 +59,7 @@ public final class Replayer implements AutoCloseable {
         this.clock = clock;
         this.cursor = log.cursor(log.startNanos());
         this.position = log.startNanos();
+        this.deviceReplies = new DeviceReplies(log);
         this.thread = Thread.ofPlatform().daemon().name("stagecraft-replay " + log.path().getFileName())
                 .unstarted(this::run);
         thread.start();
@@ -138,9 +143,11 @@ public final class Replayer implements AutoCloseable {
         lock.lock();
         try {
             checkOpen();
-            taken = null;
             io(() -> cursor.seek(at));
+            taken = null;
+            lastPublished = null;
             position = at;
+            publishDeviceReplies(at);
             changed();
         } finally {
             lock.unlock();
@@ -153,9 +160,11 @@ public final class Replayer implements AutoCloseable {
         lock.lock();
         try {
             checkOpen();
+            io(() -> cursor.seekTo(message)); // may refuse a message of another log: then nothing moved
             taken = null;
-            io(() -> cursor.seekTo(message));
+            lastPublished = null;
             position = message.timeNanos();
+            publishDeviceReplies(message.timeNanos());
             changed();
         } finally {
             lock.unlock();
@@ -163,14 +172,65 @@ public final class Replayer implements AutoCloseable {
         fireMoved(message.timeNanos(), null);
     }
 
+    /**
+     * Moves just past {@code message}, as if it had been published last: the next message published
+     * is the one after it, and a step back shows the one before it. Publishes nothing (e.g. when a
+     * log is opened again and replay goes on where it was).
+     */
+    public void seekAfter(LogMessage message) {
+        lock.lock();
+        try {
+            checkOpen();
+            io(() -> {
+                cursor.seekTo(message);
+                cursor.next();
+            });
+            taken = null;
+            lastPublished = message;
+            position = message.timeNanos();
+            changed();
+        } finally {
+            lock.unlock();
+        }
+        fireMoved(message.timeNanos(), message);
+    }
+
+    /** The message last published (the one on show); null after a seek. */
+    public LogMessage lastPublished() {
+        lock.lock();
+        try {
+            return lastPublished;
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** Publishes the next message and moves past it; null at the end. Pauses play first. */
     public LogMessage stepForward() {
         return step(cursor::next);
     }
 
-    /** Moves back before the previous message and publishes it again; null at the start. Pauses first. */
+    /**
+     * Publishes the message before the one on show (or, after a seek, the one before the position)
+     * and moves just past it, so a step forward shows again what followed; null at the start, where
+     * nothing moves. Pauses play first.
+     */
     public LogMessage stepBack() {
-        return step(cursor::previous);
+        return step(() -> {
+            boolean onShow = lastPublished != null;
+            if (onShow) {
+                cursor.previous(); // back before the message on show
+            }
+            LogMessage before = cursor.previous();
+            if (before == null) {
+                if (onShow) {
+                    cursor.next(); // nothing before it: it stays on show
+                }
+                return null;
+            }
+            cursor.next(); // just past it again
+            return before;
+        });
     }
 
     private LogMessage step(IoCall<LogMessage> move) {
@@ -212,8 +272,11 @@ public final class Replayer implements AutoCloseable {
         return log;
     }
 
-    /** The error that stopped play, if reading the log failed (play pauses then); null otherwise. */
-    public IOException failure() {
+    /**
+     * The error that stopped play (reading the log failed, or a message could not be decoded or
+     * published; play pauses then); null if none did.
+     */
+    public Exception failure() {
         lock.lock();
         try {
             return failure;
@@ -249,6 +312,7 @@ public final class Replayer implements AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+        deviceReplies.close();
         try {
             cursor.close();
         } catch (IOException e) {
@@ -278,8 +342,12 @@ public final class Replayer implements AutoCloseable {
                 if (m == null) {
                     try {
                         m = cursor.next();
-                    } catch (IOException | UncheckedIOException e) {
-                        failure = e instanceof IOException io ? io : ((UncheckedIOException) e).getCause();
+                    } catch (IOException e) {
+                        failure = e;
+                    } catch (UncheckedIOException e) {
+                        failure = e.getCause();
+                    } catch (RuntimeException e) {
+                        failure = e; // a bug in a decoder or the log: play stops and says so
                     }
                 }
                 if (m == null) {
@@ -303,6 +371,7 @@ public final class Replayer implements AutoCloseable {
                 // woken by a change (pause, seek, speed, close): decided below under the lock
             }
             boolean published = false;
+            boolean failed = false;
             lock.lock();
             try {
                 if (generation == gen && taken == m && playing) {
@@ -310,8 +379,17 @@ public final class Replayer implements AutoCloseable {
                     publish(m);
                     published = true;
                 }
+            } catch (RuntimeException e) {
+                failure = e; // e.g. the bus was closed under us: stop, do not die silently
+                playing = false;
+                changed();
+                failed = true;
             } finally {
                 lock.unlock();
+            }
+            if (failed) {
+                fireState();
+                continue;
             }
             if (published) {
                 fireMoved(m.timeNanos(), m);
@@ -327,8 +405,24 @@ public final class Replayer implements AutoCloseable {
         }
     }
 
+    /**
+     * After a jump, what a live view would know by then: the latest geometry and configuration
+     * replies of each device before the new position (see {@link DeviceReplies}).
+     */
+    private void publishDeviceReplies(long before) {
+        for (LogMessage m : deviceReplies.before(before)) {
+            m.toStreamMessage().ifPresent(bus::publish);
+        }
+    }
+
+    /** For tests: waits until the pass that finds device replies has read the log. */
+    boolean awaitDeviceReplies(long millis) throws InterruptedException {
+        return deviceReplies.awaitDone(millis);
+    }
+
     private void publish(LogMessage m) {
         position = m.timeNanos();
+        lastPublished = m;
         m.toStreamMessage().ifPresent(bus::publish);
     }
 
@@ -391,8 +485,17 @@ public final class Replayer implements AutoCloseable {
 
     private void fireMoved(long time, LogMessage last) {
         for (ReplayListener l : listeners) {
-            l.moved(time, last);
+            try {
+                l.moved(time, last);
+            } catch (RuntimeException e) {
+                listenerFailures.incrementAndGet(); // a broken listener must not stop play
+            }
         }
+    }
+
+    /** How often a listener threw (each call is isolated, play goes on). */
+    public long listenerFailures() {
+        return listenerFailures.get();
     }
 
     private void fireState() {
@@ -406,7 +509,11 @@ public final class Replayer implements AutoCloseable {
             lock.unlock();
         }
         for (ReplayListener l : listeners) {
-            l.stateChanged(p, s);
+            try {
+                l.stateChanged(p, s);
+            } catch (RuntimeException e) {
+                listenerFailures.incrementAndGet();
+            }
         }
     }
 }
