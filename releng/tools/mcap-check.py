@@ -18,12 +18,21 @@ from collections import Counter
 from mcap.reader import make_reader
 
 WIRE_PREFIX = struct.Struct("<QBH")  # stream offset, kind, reason length
-JSON_TYPES = {"integer": (int,), "number": (int, float, type(None)), "string": (str,), "boolean": (bool,),
+JSON_TYPES = {"integer": (int,), "number": (int, float), "null": (type(None),), "string": (str,), "boolean": (bool,),
               "array": (list,), "object": (dict,)}
 
 
 def fits(value, schema, where):
     """Checks a decoded JSON value against the parts of JSON Schema the export writes."""
+    if "anyOf" in schema:
+        problems = []
+        for alternative in schema["anyOf"]:
+            try:
+                fits(value, alternative, where)
+                return
+            except ValueError as e:
+                problems.append(str(e))
+        raise ValueError(f"{where}: fits none of anyOf ({'; '.join(problems)})")
     kind = schema.get("type")
     if kind is None:
         return

@@ -249,6 +249,26 @@ class Client:
         log.warning("%s: ignored a reply to no request in flight (%s) while %s", self.where,
                     msg.header.describe(), while_doing)
 
+    def _set_aside_arrived(self, while_doing: str) -> None:
+        """Takes in what has already arrived, without waiting, before a request goes out.
+
+        Replies are matched by interface, index and subtype only, so a late extra reply to an
+        earlier request (rangertolaser's second NACK) would answer the next identical request if it
+        were still queued when that request is sent; no request is in flight now, so any reply that
+        has arrived is a stray. DATA is kept for the proxies and the next :meth:`read`.
+        """
+        self._drain_socket()
+        kept: deque[Message] = deque()
+        while self._incoming:
+            msg = self._incoming.popleft()
+            if msg.header.type == MsgType.DATA:
+                self._unread.append(self._data(msg))
+            elif msg.header.type in (MsgType.RESP_ACK, MsgType.RESP_NACK):
+                self._stray(msg, while_doing)
+            else:
+                kept.append(msg)
+        self._incoming = kept
+
     # -- requests and commands ----------------------------------------------------------------
 
     def request(self, interf: int, index: int, subtype: int, body: bytes = b"", *,
@@ -256,10 +276,12 @@ class Client:
         """Sends a REQ and returns its RESP_ACK; a RESP_NACK raises :class:`RequestRefused`.
 
         The reply is the first RESP_ACK/RESP_NACK with the request's interface, index and
-        subtype; other replies are strays (kept in :attr:`stray_replies`), DATA goes to the
+        subtype that arrives after the request is sent (replies already there are set aside
+        first); other replies are strays (kept in :attr:`stray_replies`), DATA goes to the
         proxies and to the next :meth:`read`.
         """
         what = Header(0, 0, interf, index, MsgType.REQ, subtype, 0, 0, len(body)).describe()
+        self._set_aside_arrived(f"before sending {what}")
         self._send(interf, index, MsgType.REQ, subtype, body)
         deadline, t = self._deadline(timeout)
         while True:

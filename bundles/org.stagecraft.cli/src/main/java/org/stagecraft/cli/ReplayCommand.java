@@ -13,9 +13,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 
+import org.stagecraft.demo.recorded.PlayableConnection;
 import org.stagecraft.demo.recorded.RecordedPlayer;
-import org.stagecraft.demo.recorded.TimedConnection;
-import org.stagecraft.demo.recorded.TimedRecording;
 import org.stagecraft.replay.log.LogProblem;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.log.SessionLogs;
@@ -78,22 +77,27 @@ final class ReplayCommand {
             err.println("stagecraft replay: " + input + ": " + (Files.exists(input) ? "not a readable file" : "no such file"));
             return 1;
         }
-        List<TimedConnection> recorded;
+        // the log stays open while serving: each served connection streams from it
         try (SessionLog log = SessionLogs.open(input)) {
             for (LogProblem p : log.problems()) {
                 err.println("stagecraft replay: " + input + ": " + p);
             }
-            recorded = RecordedServerStreams.read(log);
+            List<RecordedServerStreams.LogConnection> recorded = RecordedServerStreams.read(log);
+            if (recorded.isEmpty()) {
+                err.println("stagecraft replay: " + input + ": no connection in which the Player server sent anything");
+                return 1;
+            }
+            return serve(recorded, targets, speed, loop, out, err);
         } catch (IOException e) {
             err.println("stagecraft replay: " + e.getMessage());
             return 1;
         }
-        if (recorded.isEmpty()) {
-            err.println("stagecraft replay: " + input + ": no connection in which the Player server sent anything");
-            return 1;
-        }
-        Map<Integer, List<TimedConnection>> byPort = new LinkedHashMap<>();
-        for (TimedConnection c : recorded) {
+    }
+
+    private static int serve(List<? extends PlayableConnection> recorded, List<String> targets, double speed, boolean loop,
+            PrintStream out, PrintStream err) {
+        Map<Integer, List<PlayableConnection>> byPort = new LinkedHashMap<>();
+        for (PlayableConnection c : recorded) {
             byPort.computeIfAbsent(c.port(), k -> new ArrayList<>()).add(c);
         }
         List<RecordedPlayer.Listener> listeners;
@@ -105,7 +109,7 @@ final class ReplayCommand {
         }
         int toServe = listeners.stream().mapToInt(l -> l.connections().size()).sum();
         CountDownLatch served = new CountDownLatch(toServe);
-        RecordedPlayer player = new RecordedPlayer(new TimedRecording(input, recorded), speed, s -> {
+        RecordedPlayer player = new RecordedPlayer(speed, s -> {
             if (s.error() != null || !s.result().matches()) {
                 err.println("stagecraft replay: warning: " + s.describe());
             } else {
@@ -139,7 +143,7 @@ final class ReplayCommand {
     }
 
     /** {@code HOST:PORT} in the order of the recorded ports, or {@code PORT=HOST:PORT} for a given one. */
-    static List<RecordedPlayer.Listener> listeners(List<String> targets, Map<Integer, List<TimedConnection>> byPort)
+    static List<RecordedPlayer.Listener> listeners(List<String> targets, Map<Integer, ? extends List<? extends PlayableConnection>> byPort)
             throws UnknownHostException {
         List<Integer> ports = new ArrayList<>(byPort.keySet());
         List<RecordedPlayer.Listener> out = new ArrayList<>();

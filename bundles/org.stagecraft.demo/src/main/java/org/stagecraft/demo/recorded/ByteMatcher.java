@@ -1,26 +1,50 @@
 package org.stagecraft.demo.recorded;
 
+import java.io.IOException;
+
 /**
  * Compares bytes as they arrive with what was recorded, without keeping them: a replay loops for
- * hours, and the only question is whether the other side said exactly what the recording says.
+ * hours, and the only question is whether the other side said exactly what the recording says. The
+ * recorded bytes are read from their source as far as the comparison has got, so a large recording
+ * is never held whole.
  */
 final class ByteMatcher {
-    private final byte[] expected;
+    private final ChunkSource expected;
+    private byte[] current = new byte[0];
+    private int at;
+    private boolean expectedEnded;
     private long received;
     private long firstDifference = -1;
 
-    ByteMatcher(byte[] expected) {
+    ByteMatcher(ChunkSource expected) {
         this.expected = expected;
     }
 
-    void accept(byte[] buffer, int length) {
+    ByteMatcher(byte[] expected) {
+        this(ChunkSource.of(java.util.List.of(new TimedChunk(0, expected))));
+    }
+
+    void accept(byte[] buffer, int length) throws IOException {
         for (int i = 0; i < length && firstDifference < 0; i++) {
-            long at = received + i;
-            if (at >= expected.length || buffer[i] != expected[(int) at]) {
-                firstDifference = at;
+            if (!moreExpected() || buffer[i] != current[at++]) {
+                firstDifference = received + i;
             }
         }
         received += length;
+    }
+
+    /** Whether a recorded byte is left, moving to the next non-empty chunk when this one is used up. */
+    private boolean moreExpected() throws IOException {
+        while (at >= current.length && !expectedEnded) {
+            TimedChunk c = expected.next();
+            if (c == null) {
+                expectedEnded = true;
+            } else {
+                current = c.data();
+                at = 0;
+            }
+        }
+        return at < current.length;
     }
 
     long received() {
@@ -28,8 +52,8 @@ final class ByteMatcher {
     }
 
     /** Whether everything received so far, and nothing more or less, is what was recorded. */
-    boolean matchesWhole() {
-        return firstDifference < 0 && received == expected.length;
+    boolean matchesWhole() throws IOException {
+        return firstDifference < 0 && !moreExpected();
     }
 
     /** The offset of the first byte that differs (or is extra), or -1 if none does. */

@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.Socket;
-import java.util.List;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -14,13 +13,14 @@ import java.util.concurrent.Future;
  * One side of a recorded connection played over a real socket at the recorded pace: each chunk is
  * written when it was recorded, the side half-closes when the recorded connection ended, and
  * meanwhile everything the other side sends is read (a peer that stops reading would stall the
- * other's writes) and compared with the recording.
+ * other's writes) and compared with the recording. Both sides are read from their sources as they
+ * are played (the caller opens and closes them), so only the chunk in hand is in memory.
  */
 final class Exchange {
     private Exchange() {
     }
 
-    static ExchangeResult play(Socket socket, List<TimedChunk> send, byte[] expected, double length, double speed)
+    static ExchangeResult play(Socket socket, ChunkSource send, ChunkSource expected, double length, double speed)
             throws IOException, InterruptedException {
         try (socket; ExecutorService writer = Executors.newVirtualThreadPerTaskExecutor()) {
             socket.setTcpNoDelay(true);
@@ -28,7 +28,7 @@ final class Exchange {
             OutputStream out = socket.getOutputStream();
             Future<Long> sending = writer.submit(() -> {
                 long sent = 0;
-                for (TimedChunk c : send) {
+                for (TimedChunk c = send.next(); c != null; c = send.next()) {
                     pacer.awaitOffset(c.offset());
                     out.write(c.data());
                     sent += c.data().length;

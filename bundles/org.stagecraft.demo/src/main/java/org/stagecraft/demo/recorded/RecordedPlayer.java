@@ -49,11 +49,16 @@ public final class RecordedPlayer implements AutoCloseable {
         this.report = report;
     }
 
+    /** For {@link #start(Collection)} only: each listener brings its own recorded connections. */
+    public RecordedPlayer(double speed, Consumer<Served> report) {
+        this(null, speed, report);
+    }
+
     /**
      * One address to listen on and the recorded connections it serves: the n-th client it accepts
      * gets connection n modulo their number.
      */
-    public record Listener(InetSocketAddress address, List<TimedConnection> connections) {
+    public record Listener(InetSocketAddress address, List<? extends PlayableConnection> connections) {
         public Listener {
             connections = List.copyOf(connections);
             if (connections.isEmpty()) {
@@ -64,6 +69,9 @@ public final class RecordedPlayer implements AutoCloseable {
 
     /** Binds every port on the loopback interface (all or none) and starts accepting. */
     public synchronized void start(List<Integer> ports) throws IOException {
+        if (recording == null) {
+            throw new IllegalStateException("no recording to serve on bare ports: start with listeners");
+        }
         List<InetSocketAddress> addresses = ports.stream()
                 .map(p -> new InetSocketAddress(InetAddress.getLoopbackAddress(), p)).toList();
         bind(addresses);
@@ -110,7 +118,7 @@ public final class RecordedPlayer implements AutoCloseable {
         return servers.stream().map(ServerSocket::getLocalPort).toList();
     }
 
-    private Void acceptLoop(ServerSocket server, Supplier<TimedConnection> next) {
+    private Void acceptLoop(ServerSocket server, Supplier<? extends PlayableConnection> next) {
         while (!server.isClosed()) {
             Socket client;
             try {
@@ -119,15 +127,15 @@ public final class RecordedPlayer implements AutoCloseable {
                 return null; // closed
             }
             open.add(client);
-            TimedConnection conn = next.get();
+            PlayableConnection conn = next.get();
             threads.submit(() -> serve(client, server.getLocalPort(), conn));
         }
         return null;
     }
 
-    private Void serve(Socket client, int port, TimedConnection conn) {
-        try {
-            ExchangeResult r = Exchange.play(client, conn.server(), conn.clientBytes(), conn.length(), speed);
+    private Void serve(Socket client, int port, PlayableConnection conn) {
+        try (client; ChunkSource send = conn.openServer(); ChunkSource expected = conn.openClient()) {
+            ExchangeResult r = Exchange.play(client, send, expected, conn.length(), speed);
             report.accept(new Served(port, conn.conn(), r, null));
         } catch (IOException e) {
             report.accept(new Served(port, conn.conn(), null, e.getMessage()));

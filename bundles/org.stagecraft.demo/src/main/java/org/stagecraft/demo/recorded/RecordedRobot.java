@@ -52,8 +52,8 @@ public final class RecordedRobot {
         for (int n = 1; passes == 0 || n <= passes; n++) {
             TimedConnection conn = recording.connections().get((n - 1) % recording.connections().size());
             Socket socket = n == 1 ? first : connect(System.nanoTime() + connectWithin.toNanos());
-            try {
-                ExchangeResult r = Exchange.play(socket, conn.client(), conn.serverBytes(), conn.length(), speed);
+            try (ChunkSource send = conn.openClient(); ChunkSource expected = conn.openServer()) {
+                ExchangeResult r = Exchange.play(socket, send, expected, conn.length(), speed);
                 report.accept(new Pass(n, conn.conn(), r, null));
             } catch (IOException e) {
                 report.accept(new Pass(n, conn.conn(), null, e.getMessage()));

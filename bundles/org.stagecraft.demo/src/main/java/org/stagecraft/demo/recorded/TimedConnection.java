@@ -13,11 +13,22 @@ import java.util.List;
  * @param server what Player sent (the ident banner first)
  * @param length seconds from open to close (or to the last chunk when the close was not recorded)
  */
-public record TimedConnection(int conn, int port, List<TimedChunk> client, List<TimedChunk> server, double length) {
+public record TimedConnection(int conn, int port, List<TimedChunk> client, List<TimedChunk> server, double length)
+        implements PlayableConnection {
 
     public TimedConnection {
         client = List.copyOf(client);
         server = List.copyOf(server);
+    }
+
+    @Override
+    public ChunkSource openServer() {
+        return ChunkSource.of(server);
+    }
+
+    @Override
+    public ChunkSource openClient() {
+        return ChunkSource.of(client);
     }
 
     public byte[] clientBytes() {

@@ -17,44 +17,55 @@ import org.stagecraft.spy.log.SpyLogWriter;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 
 /**
- * A log as an MCAP file Foxglove shows: one JSON channel per stream, topic
- * {@code /<port>/<iface>:<index>/<TYPE>/<SUBTYPE>} (e.g. {@code /6665/laser:0/DATA/SCAN}), message
- * encoding {@code json}, a JSON Schema per kind of message generated from its fields, log time the
- * recorded time. The file is also a complete spy log: the wire channels (every banner, message and
- * piece of unframed bytes, exact) and the connection events are written as the spy writes them, so
- * nothing is lost and Stagecraft opens the export like any spy log. With a filter, the wire channels
- * hold only the messages taken (their streams then have gaps); banners, unframed bytes, events and
- * diagnostics in the time range are always kept.
+ * A log as an MCAP file Foxglove shows: one JSON channel per stream, as on the stream bus (one
+ * connection's messages of one kind), topic {@code /<port>/<conn>/<iface>:<index>/<TYPE>/<SUBTYPE>}
+ * (e.g. {@code /6665/1/laser:0/DATA/SCAN}): two clients of one device are two streams, and putting
+ * them on one channel would show every message twice. Message encoding {@code json}, log time the
+ * recorded time. Each channel's JSON Schema is the union of the layouts of all its messages (a NACK
+ * with and one without a body, say), so every message validates; that needs a first pass over the
+ * taken messages before anything is written. The file is also a complete spy log: the wire channels
+ * (every banner, message and piece of unframed bytes, exact) and the connection events are written
+ * as the spy writes them, so nothing is lost and Stagecraft opens the export like any spy log. With a
+ * filter, the wire channels hold only the messages taken (their streams then have gaps); banners,
+ * unframed bytes, events and diagnostics in the time range are always kept.
  */
 public final class McapExport {
     /** What was written. */
     public record Summary(long wireEntries, long jsonMessages, int jsonChannels) {
     }
 
-    private record Kind(int port, int interf, int index, int type, int subtype) {
+    /** One stream: a connection's messages of one kind. */
+    private record Stream(int conn, int port, int interf, int index, int type, int subtype) {
+        static Stream of(LogMessage m) {
+            MessageHeader h = m.decoded().header();
+            return new Stream(m.connection().id(), m.connection().port(), h.interf(), h.index(), h.type(), h.subtype());
+        }
+    }
+
+    /** Receives the log messages an export takes, in log order. */
+    private interface Taken {
+        void accept(LogMessage m) throws IOException;
     }
 
     private McapExport() {
     }
 
     public static Summary write(SessionLog log, ExportFilter filter, CodecRegistry registry, Path out) throws IOException {
+        Map<Stream, JsonSchemaOf.Node> schemas = new HashMap<>();
+        forEachTaken(log, filter, registry, m -> {
+            if (m.kind() == LogMessage.Kind.FRAME) {
+                JsonSchemaOf.Node n = JsonSchemaOf.of(m.decoded().body());
+                schemas.merge(Stream.of(m), n, JsonSchemaOf.Node::merge);
+            }
+        });
         Map<String, String> meta = new TreeMap<>();
         meta.put("exported-from", log.path().toString());
         meta.put("format", log.format().name());
         meta.put("filter", filter.isAll() ? "none" : filter.toString());
-        Map<Kind, Integer> channels = new HashMap<>();
-        long wire = 0;
-        long json = 0;
-        long start = log.startNanos();
-        long from = filter.fromSeconds() == null ? Long.MIN_VALUE : start + Math.round(filter.fromSeconds() * 1e9);
-        try (SpyLogWriter w = SpyLogWriter.create(out, meta); LogCursor c = log.cursor(from)) {
-            for (LogMessage m = c.next(); m != null; m = c.next()) {
-                if (!filter.inTime(m.timeNanos(), start)) {
-                    if (filter.untilSeconds() != null && (m.timeNanos() - start) / 1e9 > filter.untilSeconds()) {
-                        break;
-                    }
-                    continue;
-                }
+        Map<Stream, Integer> channels = new HashMap<>();
+        long[] counts = new long[2]; // wire entries, JSON messages
+        try (SpyLogWriter w = SpyLogWriter.create(out, meta)) {
+            forEachTaken(log, filter, registry, m -> {
                 ConnectionInfo ci = m.connection();
                 switch (m.kind()) {
                     case OPENED -> w.connectionOpened(m.timeNanos(), ci.id(), ci.client(), ci.listen(), ci.upstream());
@@ -64,46 +75,63 @@ public final class McapExport {
                         w.wire(m.timeNanos(), ci.id(), ci.port(), m.dir(), m.streamOffset(),
                                 m.kind() == LogMessage.Kind.BANNER ? LogEntry.Kind.BANNER : LogEntry.Kind.UNFRAMED,
                                 m.bytes(), m.text());
-                        wire++;
+                        counts[0]++;
                     }
                     case FRAME -> {
-                        if (!filter.takes(m, registry)) {
-                            continue;
-                        }
                         w.wire(m.timeNanos(), ci.id(), ci.port(), m.dir(), m.streamOffset(), LogEntry.Kind.FRAME,
                                 m.bytes(), "");
-                        wire++;
+                        counts[0]++;
                         MessageHeader h = m.decoded().header();
-                        Kind k = new Kind(ci.port(), h.interf(), h.index(), h.type(), h.subtype());
+                        Stream k = Stream.of(m);
                         Integer channel = channels.get(k);
                         if (channel == null) {
-                            channel = addChannel(w, registry, k, m);
+                            channel = addChannel(w, registry, k, h, schemas.get(k));
                             channels.put(k, channel);
                         }
                         w.message(channel, m.timeNanos(),
                                 JsonBody.of(h, m.decoded().body()).getBytes(StandardCharsets.UTF_8));
-                        json++;
+                        counts[1]++;
                     }
                 }
+            });
+        }
+        return new Summary(counts[0], counts[1], channels.size());
+    }
+
+    /** Every message of the time range, Player messages only when the filter takes them. */
+    private static void forEachTaken(SessionLog log, ExportFilter filter, CodecRegistry registry, Taken taken)
+            throws IOException {
+        long start = log.startNanos();
+        long from = filter.fromSeconds() == null ? Long.MIN_VALUE : start + Math.round(filter.fromSeconds() * 1e9);
+        try (LogCursor c = log.cursor(from)) {
+            for (LogMessage m = c.next(); m != null; m = c.next()) {
+                if (!filter.inTime(m.timeNanos(), start)) {
+                    if (filter.untilSeconds() != null && (m.timeNanos() - start) / 1e9 > filter.untilSeconds()) {
+                        break;
+                    }
+                    continue;
+                }
+                if (m.kind() == LogMessage.Kind.FRAME && !filter.takes(m, registry)) {
+                    continue;
+                }
+                taken.accept(m);
             }
         }
-        return new Summary(wire, json, channels.size());
     }
 
-    /** The topic of a kind of message on a Player port. */
-    static String topic(CodecRegistry registry, int port, MessageHeader h) {
-        return "/" + port + "/" + Names.iface(registry, h.interf()) + ":" + h.index() + "/" + Names.type(h.type()) + "/"
-                + Names.subtype(registry, h);
+    /** The topic of one connection's messages of one kind on a Player port. */
+    static String topic(CodecRegistry registry, int port, int conn, MessageHeader h) {
+        return "/" + port + "/" + conn + "/" + Names.iface(registry, h.interf()) + ":" + h.index() + "/"
+                + Names.type(h.type()) + "/" + Names.subtype(registry, h);
     }
 
-    private static int addChannel(SpyLogWriter w, CodecRegistry registry, Kind k, LogMessage first) throws IOException {
-        MessageHeader h = first.decoded().header();
+    private static int addChannel(SpyLogWriter w, CodecRegistry registry, Stream k, MessageHeader h, JsonSchemaOf.Node schema)
+            throws IOException {
         String title = "player " + Names.iface(registry, h.interf()) + " " + Names.type(h.type()) + " "
                 + Names.subtype(registry, h);
-        String schema = JsonSchemaOf.of(title, first.decoded().body());
-        return w.addChannel(topic(registry, k.port(), h), "json", title.replace(' ', '.'), "jsonschema",
-                schema.getBytes(StandardCharsets.UTF_8),
-                Map.of("port", Integer.toString(k.port()), "interface", Names.iface(registry, k.interf()),
-                        "index", Integer.toString(k.index())));
+        return w.addChannel(topic(registry, k.port(), k.conn(), h), "json", title.replace(' ', '.'), "jsonschema",
+                JsonSchemaOf.text(title, schema).getBytes(StandardCharsets.UTF_8),
+                Map.of("port", Integer.toString(k.port()), "conn", Integer.toString(k.conn()),
+                        "interface", Names.iface(registry, k.interf()), "index", Integer.toString(k.index())));
     }
 }

@@ -19,12 +19,14 @@ import org.stagecraft.spy.log.SpyLogWriter;
  * Writes a writelog file into a spy log as if a spy had watched Player serve it: one connection per
  * robot (Player port) in the file, opened at its first line's time with client {@code writelog} and
  * listen address {@code writelog:<port>}, a server banner, then every readable line as a
- * server-to-client Player message (header rebuilt from the line, sequence numbers counted per
- * connection), and every connection closed at the file's last time.
+ * server-to-client Player message (header rebuilt from the line, sequence number 0: the file carries
+ * none, and Player sends 0 in every recorded trace), and every connection closed at the file's last time.
  */
 public final class WritelogImport {
     static final String CLIENT = "writelog";
     private static final int BANNER_SIZE = 32;
+    /** What Player puts in a header's seq field (it never counts); a writelog line has no seq to keep. */
+    static final int PLAYER_SEQ = 0;
 
     private WritelogImport() {
     }
@@ -33,7 +35,6 @@ public final class WritelogImport {
         final int conn;
         final int port;
         long offset;
-        int seq;
         long lastNanos = Long.MIN_VALUE;
 
         Connection(int conn, int port) {
@@ -62,7 +63,7 @@ public final class WritelogImport {
                 // a spy log's streams run forward in time; a line that goes back in time (readlog
                 // just does not wait for it) is logged at its connection's latest time
                 c.lastNanos = Math.max(c.lastNanos, t);
-                byte[] bytes = PlayerEncoder.encode(r.header(++c.seq), r.body());
+                byte[] bytes = PlayerEncoder.encode(r.header(PLAYER_SEQ), r.body());
                 out.wire(c.lastNanos, c.conn, c.port, Direction.SERVER_TO_CLIENT, c.offset, LogEntry.Kind.FRAME, bytes, "");
                 c.offset += bytes.length;
                 endNanos = Math.max(endNanos, c.lastNanos);

@@ -207,10 +207,10 @@ class ExportTest {
                 }
             }
             assertEquals(s.jsonChannels(), byTopic.size());
-            assertTrue(byTopic.containsKey("/6665/laser:0/DATA/SCAN"), byTopic.keySet().toString());
+            assertTrue(byTopic.containsKey("/6665/1/laser:0/DATA/SCAN"), byTopic.keySet().toString());
             Map<String, Integer> next = new HashMap<>();
             for (LogMessage m : frames) {
-                String topic = McapExport.topic(REGISTRY, m.connection().port(), m.decoded().header());
+                String topic = McapExport.topic(REGISTRY, m.connection().port(), m.connection().id(), m.decoded().header());
                 int i = next.merge(topic, 1, Integer::sum) - 1;
                 McapMessages.Message jm = byTopic.get(topic).get(i);
                 String where = topic + " #" + i;
@@ -245,6 +245,136 @@ class ExportTest {
                 assertEquals(log.connections().size(), back.connections().size());
             }
         }
+    }
+
+    @Test
+    void twoClientsOfOneDeviceAreTwoChannelsEachWithItsConnectionsMessagesOnly() throws IOException {
+        Path sonar = SharedTraces.file("pioneer-laser-sonar.sonar.trace.jsonl");
+        Path out = Files.createDirectories(Path.of("target", "test-logs")).resolve("export-sonar.mcap");
+        try (SessionLog log = SessionLogs.open(sonar)) {
+            List<LogMessage> frames = frames(log);
+            McapExport.Summary s = McapExport.write(log, ExportFilter.all(), REGISTRY, out);
+            assertEquals(frames.size(), s.jsonMessages(), "each message once");
+            Map<String, Long> expected = new LinkedHashMap<>();
+            for (LogMessage m : frames) {
+                expected.merge(McapExport.topic(REGISTRY, m.connection().port(), m.connection().id(), m.decoded().header()),
+                        1L, Long::sum);
+            }
+            McapMessages mcap = McapMessages.read(out);
+            Map<String, Long> got = new LinkedHashMap<>();
+            Map<String, Integer> channelOfTopic = new HashMap<>();
+            for (McapMessages.Message m : mcap.messages) {
+                McapMessages.Channel c = mcap.channels.get(m.channel());
+                if (c.encoding().equals("json") && !c.topic().equals("/events")) {
+                    got.merge(c.topic(), 1L, Long::sum);
+                    Integer before = channelOfTopic.putIfAbsent(c.topic(), c.id());
+                    assertTrue(before == null || before == c.id(), "one channel per stream: " + c.topic());
+                    assertEquals(c.topic().split("/")[2], c.metadata().get("conn"), c.topic());
+                }
+            }
+            assertEquals(expected, got);
+            // both clients talk to the server's own device (player:0): its SYNCHs are two streams, two channels
+            assertTrue(got.containsKey("/6665/1/player:0/SYNCH/OK") && got.containsKey("/6665/2/player:0/SYNCH/OK"),
+                    got.keySet().toString());
+        }
+    }
+
+    @Test
+    void aChannelsSchemaIsTheUnionOfItsLayoutsSoEveryMessageValidates() {
+        // Player's NACK to a subscription carries a device request; NACKs are documented without body
+        int dev = 3;
+        MessageHeader h = new MessageHeader(0, 6665, 1, 0, org.stagecraft.player.wire.MessageType.RESP_NACK.code(), dev, 1.5,
+                0, 0);
+        byte[] req = HexFormat.of().parseHex("00000000" + "00001a09" + "00000004" + "00000000" + "00000003"
+                + "00000000" + "00000000");
+        org.stagecraft.player.codec.PlayerDecoder decoder = new org.stagecraft.player.codec.PlayerDecoder(REGISTRY);
+        var withBody = decoder.decode(new MessageHeader(0, 6665, 1, 0, h.type(), dev, 1.5, 0, req.length), req);
+        var without = decoder.decode(h, new byte[0]);
+        JsonObject bodyJson = JsonParser.parseString(JsonBody.of(withBody.header(), withBody.body())).getAsJsonObject();
+        JsonObject emptyJson = JsonParser.parseString(JsonBody.of(without.header(), without.body())).getAsJsonObject();
+        assertTrue(bodyJson.size() > emptyJson.size(), "the two layouts differ: " + bodyJson + " / " + emptyJson);
+
+        JsonObject first = JsonParser.parseString(JsonSchemaOf.text("t", JsonSchemaOf.of(without.body()))).getAsJsonObject();
+        assertTrue(!first.getAsJsonObject("properties").keySet().containsAll(bodyJson.keySet()),
+                "a schema from the first (empty) NACK alone does not describe the other");
+
+        JsonSchemaOf.Node union = JsonSchemaOf.of(without.body()).merge(JsonSchemaOf.of(withBody.body()));
+        JsonObject schema = JsonParser.parseString(JsonSchemaOf.text("player RESP_NACK DEV", union)).getAsJsonObject();
+        assertEquals(bodyJson.keySet(), schema.getAsJsonObject("properties").keySet(), "every member seen is described");
+        assertEquals(List.of("header"), schema.getAsJsonArray("required").asList().stream().map(JsonElement::getAsString).toList(),
+                "only what every layout has is required");
+        assertEquals("", violations(bodyJson, schema, "$"));
+        assertEquals("", violations(emptyJson, schema, "$"));
+        JsonObject wrong = bodyJson.deepCopy();
+        wrong.remove("header");
+        assertTrue(violations(wrong, schema, "$").contains("no header"), "the checker can fail");
+    }
+
+    /** A small JSON Schema check of what the export writes: type, properties, required, items, anyOf. */
+    private static String violations(JsonElement v, JsonObject schema, String where) {
+        if (schema.has("anyOf")) {
+            for (JsonElement alt : schema.getAsJsonArray("anyOf")) {
+                if (violations(v, alt.getAsJsonObject(), where).isEmpty()) {
+                    return "";
+                }
+            }
+            return where + ": fits no alternative; ";
+        }
+        if (!schema.has("type")) {
+            return "";
+        }
+        String type = schema.get("type").getAsString();
+        StringBuilder out = new StringBuilder();
+        switch (type) {
+            case "object" -> {
+                if (!v.isJsonObject()) {
+                    return where + ": not an object; ";
+                }
+                JsonObject o = v.getAsJsonObject();
+                if (schema.has("required")) {
+                    for (JsonElement r : schema.getAsJsonArray("required")) {
+                        if (!o.has(r.getAsString())) {
+                            out.append(where).append(": no ").append(r.getAsString()).append("; ");
+                        }
+                    }
+                }
+                JsonObject props = schema.has("properties") ? schema.getAsJsonObject("properties") : new JsonObject();
+                for (String k : o.keySet()) {
+                    if (props.has(k)) {
+                        out.append(violations(o.get(k), props.getAsJsonObject(k), where + "." + k));
+                    } else {
+                        out.append(where).append(": ").append(k).append(" not described; ");
+                    }
+                }
+            }
+            case "array" -> {
+                if (!v.isJsonArray()) {
+                    return where + ": not an array; ";
+                }
+                int i = 0;
+                for (JsonElement e : v.getAsJsonArray()) {
+                    out.append(violations(e, schema.getAsJsonObject("items"), where + "[" + i++ + "]"));
+                }
+            }
+            case "string" -> {
+                if (!(v.isJsonPrimitive() && v.getAsJsonPrimitive().isString())) {
+                    out.append(where).append(": not a string; ");
+                }
+            }
+            case "null" -> {
+                if (!v.isJsonNull()) {
+                    out.append(where).append(": not null; ");
+                }
+            }
+            case "integer", "number" -> {
+                if (!(v.isJsonPrimitive() && v.getAsJsonPrimitive().isNumber())
+                        || type.equals("integer") && v.getAsString().contains(".")) {
+                    out.append(where).append(": not ").append(type).append("; ");
+                }
+            }
+            default -> out.append(where).append(": unknown type ").append(type).append("; ");
+        }
+        return out.toString();
     }
 
     /** The JSON value at a flat path like "pos.px" or "ranges[3]" or "poses[2].px". */

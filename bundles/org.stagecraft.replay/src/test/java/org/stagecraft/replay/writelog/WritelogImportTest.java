@@ -87,6 +87,7 @@ class WritelogImportTest {
                 assertEquals(rec.robot(), h.robotUnsigned());
                 assertEquals(rec.interf(), h.interf());
                 assertEquals(match.bytes().length - MessageHeader.SIZE, h.size());
+                assertEquals(0, h.seq(), "a writelog line has no seq; Player sends 0");
                 byte[] payload = java.util.Arrays.copyOfRange(match.bytes(), MessageHeader.SIZE, match.bytes().length);
                 assertArrayEquals(PlayerEncoder.encodeBody(rec.body()), payload);
                 assertEquals(rec.body(), decoder.decode(h, payload).body());

@@ -71,6 +71,8 @@ public final class SpyLogWriter implements AutoCloseable {
     private final Map<Integer, SchemaDef> extraSchemas = new TreeMap<>();
     private final java.util.Set<Integer> extraSchemaWritten = new java.util.HashSet<>();
     private int nextExtraChannel = -1;
+    /** The ids {@link #addChannel} handed out: the only channels {@link #message} writes to. */
+    private final java.util.Set<Integer> addedChannels = new java.util.HashSet<>();
     private final java.util.Set<Integer> channelWritten = new java.util.HashSet<>();
     private int nextChannel = Layout.FIRST_WIRE_CHANNEL;
     /** Addresses of each opened connection, repeated in its wire channels' metadata. */
@@ -235,6 +237,7 @@ public final class SpyLogWriter implements AutoCloseable {
             throw new IOException("more than " + (0xffff - 1) + " channels in one spy log");
         }
         int id = nextExtraChannel--;
+        addedChannels.add(id);
         channels.put(id, new ChannelDef(id, schemaId, topic, messageEncoding,
                 new TreeMap<>(metadata == null ? Map.of() : metadata)));
         return id;
@@ -244,7 +247,7 @@ public final class SpyLogWriter implements AutoCloseable {
     public synchronized void message(int channel, long timeNanos, byte[] data) throws IOException {
         check();
         ChannelDef c = channels.get(channel);
-        if (c == null || channel <= nextExtraChannel) {
+        if (c == null || !addedChannels.contains(channel)) {
             throw new IllegalArgumentException("channel " + channel + " was not added with addChannel");
         }
         int at = beginMessage(channel, timeNanos);

@@ -64,6 +64,27 @@ class AddedChannelsTest {
         }
     }
 
+    @Test
+    void messageRefusesEveryChannelAddChannelDidNotReturnBeforeAndAfterAnyWasAdded(@TempDir Path dir) throws IOException {
+        byte[] json = "{}".getBytes(StandardCharsets.UTF_8);
+        try (SpyLogWriter w = SpyLogWriter.create(dir.resolve("guard.mcap"), Map.of())) {
+            w.connectionOpened(0, 1, "127.0.0.1:40000", "127.0.0.1:6665", "127.0.0.1:7665");
+            w.wire(1, 1, 6665, org.stagecraft.player.wire.Direction.SERVER_TO_CLIENT, 0, LogEntry.Kind.BANNER,
+                    "Player v.3.1.1".getBytes(StandardCharsets.UTF_8), "");
+            int wireChannel = Layout.FIRST_WIRE_CHANNEL;
+            for (int channel : new int[] { Layout.CHANNEL_EVENTS, wireChannel, 0xffff, 0, 12345 }) {
+                assertThrows(IllegalArgumentException.class, () -> w.message(channel, 2, json),
+                        "channel " + channel + " before any addChannel");
+            }
+            int added = w.addChannel("/n", "json", "test.N", "jsonschema", "{}".getBytes(StandardCharsets.UTF_8), Map.of());
+            w.message(added, 3, json);
+            for (int channel : new int[] { Layout.CHANNEL_EVENTS, wireChannel, added - 1, 0, 12345 }) {
+                assertThrows(IllegalArgumentException.class, () -> w.message(channel, 4, json),
+                        "channel " + channel + " after addChannel returned " + added);
+            }
+        }
+    }
+
     private static List<LogEntry> entries(Path log) throws IOException {
         List<LogEntry> out = new ArrayList<>();
         try (SpyLogReader r = SpyLogReader.open(log)) {
