@@ -64,28 +64,14 @@ public final class CsvExport {
         return rows[0];
     }
 
-    interface MessageAction {
-        void accept(LogMessage m) throws IOException;
-    }
-
     /** Calls {@code action} for every Player message the filter takes, in log order. */
-    static void forEach(SessionLog log, ExportFilter filter, CodecRegistry registry, MessageAction action)
+    static void forEach(SessionLog log, ExportFilter filter, CodecRegistry registry, ExportFilter.MessageAction action)
             throws IOException {
-        long start = log.startNanos();
-        long from = filter.fromSeconds() == null ? Long.MIN_VALUE : start + Math.round(filter.fromSeconds() * 1e9);
-        try (LogCursor c = log.cursor(from)) {
-            for (LogMessage m = c.next(); m != null; m = c.next()) {
-                if (!filter.inTime(m.timeNanos(), start)) {
-                    if (filter.untilSeconds() != null && (m.timeNanos() - start) / 1e9 > filter.untilSeconds()) {
-                        break;
-                    }
-                    continue;
-                }
-                if (filter.takes(m, registry)) {
-                    action.accept(m);
-                }
+        filter.forEachInRange(log, m -> {
+            if (filter.takes(m, registry)) {
+                action.accept(m);
             }
-        }
+        });
     }
 
     private static void row(Writer out, List<String> cells) throws IOException {

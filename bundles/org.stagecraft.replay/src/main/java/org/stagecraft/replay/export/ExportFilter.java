@@ -1,5 +1,6 @@
 package org.stagecraft.replay.export;
 
+import java.io.IOException;
 import java.util.Locale;
 import java.util.Map;
 
@@ -7,7 +8,9 @@ import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.replay.fields.FlatFields;
+import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
+import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.streams.StreamPattern;
 
 /**
@@ -30,6 +33,30 @@ public record ExportFilter(Double fromSeconds, Double untilSeconds, StreamPatter
 
     public boolean isAll() {
         return fromSeconds == null && untilSeconds == null && pattern == null && (grep == null || grep.isEmpty());
+    }
+
+    /** Receives the log messages an export takes, in log order. */
+    interface MessageAction {
+        void accept(LogMessage m) throws IOException;
+    }
+
+    /**
+     * Calls {@code action} for every entry of {@code log} in the time range, in log order, reading
+     * from the range's start and stopping after its end. The stream and text parts are the caller's
+     * ({@link #takes}), since some exports keep entries the filter does not describe.
+     */
+    void forEachInRange(SessionLog log, MessageAction action) throws IOException {
+        long start = log.startNanos();
+        long from = fromSeconds == null ? Long.MIN_VALUE : start + Math.round(fromSeconds * 1e9);
+        try (LogCursor c = log.cursor(from)) {
+            for (LogMessage m = c.next(); m != null; m = c.next()) {
+                if (inTime(m.timeNanos(), start)) {
+                    action.accept(m);
+                } else if (untilSeconds != null && (m.timeNanos() - start) / 1e9 > untilSeconds) {
+                    break;
+                }
+            }
+        }
     }
 
     /** Whether a log entry's time lies in the range; {@code startNanos} is the log's start. */

@@ -42,11 +42,6 @@ public final class McapExport {
         }
     }
 
-    /** Receives the log messages an export takes, in log order. */
-    private interface Taken {
-        void accept(LogMessage m) throws IOException;
-    }
-
     private McapExport() {
     }
 
@@ -99,24 +94,13 @@ public final class McapExport {
     }
 
     /** Every message of the time range, Player messages only when the filter takes them. */
-    private static void forEachTaken(SessionLog log, ExportFilter filter, CodecRegistry registry, Taken taken)
-            throws IOException {
-        long start = log.startNanos();
-        long from = filter.fromSeconds() == null ? Long.MIN_VALUE : start + Math.round(filter.fromSeconds() * 1e9);
-        try (LogCursor c = log.cursor(from)) {
-            for (LogMessage m = c.next(); m != null; m = c.next()) {
-                if (!filter.inTime(m.timeNanos(), start)) {
-                    if (filter.untilSeconds() != null && (m.timeNanos() - start) / 1e9 > filter.untilSeconds()) {
-                        break;
-                    }
-                    continue;
-                }
-                if (m.kind() == LogMessage.Kind.FRAME && !filter.takes(m, registry)) {
-                    continue;
-                }
+    private static void forEachTaken(SessionLog log, ExportFilter filter, CodecRegistry registry,
+            ExportFilter.MessageAction taken) throws IOException {
+        filter.forEachInRange(log, m -> {
+            if (m.kind() != LogMessage.Kind.FRAME || filter.takes(m, registry)) {
                 taken.accept(m);
             }
-        }
+        });
     }
 
     /** The topic of one connection's messages of one kind on a Player port. */
