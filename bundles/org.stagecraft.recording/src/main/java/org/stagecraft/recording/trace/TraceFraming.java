@@ -24,25 +24,41 @@ public final class TraceFraming {
     }
 
     public static TraceRecord.Header frame(TraceReader reader, Consumer<? super SessionEvent> sink) throws IOException {
+        return frame(reader, sink, l -> {
+        });
+    }
+
+    /**
+     * As {@link #frame(TraceReader, Consumer)}, also telling {@code connections} of every open and
+     * close record in its place: an open before the connection's first bytes, a close after the
+     * bytes its end leaves unframed. Whatever was framed when a bad line stops the reading is
+     * delivered (the streams are ended) before the exception is thrown.
+     */
+    public static TraceRecord.Header frame(TraceReader reader, Consumer<? super SessionEvent> sink,
+            Consumer<? super TraceRecord.Lifecycle> connections) throws IOException {
         SessionFramer framer = new SessionFramer(sink);
         TraceRecord.Header header = null;
         double last = 0;
-        for (TraceRecord r = reader.next(); r != null; r = reader.next()) {
-            switch (r) {
-                case TraceRecord.Header h -> header = h;
-                case TraceRecord.Chunk c -> {
-                    last = c.t();
-                    framer.chunk(c.t(), c.stream(), c.data());
-                }
-                case TraceRecord.Lifecycle l -> {
-                    last = l.t();
-                    if (l.isClose()) {
-                        framer.close(l.t(), l.conn());
+        try {
+            for (TraceRecord r = reader.next(); r != null; r = reader.next()) {
+                switch (r) {
+                    case TraceRecord.Header h -> header = h;
+                    case TraceRecord.Chunk c -> {
+                        last = c.t();
+                        framer.chunk(c.t(), c.stream(), c.data());
+                    }
+                    case TraceRecord.Lifecycle l -> {
+                        last = l.t();
+                        if (l.isClose()) {
+                            framer.close(l.t(), l.conn());
+                        }
+                        connections.accept(l);
                     }
                 }
             }
+        } finally {
+            framer.endAll(last);
         }
-        framer.endAll(last);
         return header;
     }
 }

@@ -7,10 +7,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
-import org.stagecraft.player.session.SessionFramer;
 import org.stagecraft.recording.trace.TraceFormatException;
+import org.stagecraft.recording.trace.TraceFraming;
 import org.stagecraft.recording.trace.TraceReader;
-import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.spy.log.SpyLogWriter;
 
 /**
@@ -36,46 +35,43 @@ final class TraceImport {
     /** @return what could not be read (empty when the whole trace went in) */
     static List<LogProblem> convert(Path trace, SpyLogWriter out) throws IOException {
         List<LogProblem> problems = new ArrayList<>();
-        SessionFramer framer = new SessionFramer(e -> {
-            try {
-                out.wire(nanos(e.t()), e.stream().conn(), e.stream().port(), e.stream().dir(), e.event());
-            } catch (IOException ex) {
-                throw new UncheckedIOException(ex);
-            }
-        });
-        double last = 0;
+        long[] last = { 0 };
         try (TraceReader reader = new TraceReader(trace)) {
             try {
-                for (TraceRecord r = reader.next(); r != null; r = reader.next()) {
-                    switch (r) {
-                        case TraceRecord.Header h -> {
-                            // the scenario and commits go nowhere: the log's own metadata says it is an import
+                TraceFraming.frame(reader, e -> {
+                    last[0] = nanos(e.t());
+                    write(() -> out.wire(nanos(e.t()), e.stream().conn(), e.stream().port(), e.stream().dir(), e.event()));
+                }, l -> {
+                    last[0] = nanos(l.t());
+                    write(() -> {
+                        if (l.isClose()) {
+                            out.connectionClosed(nanos(l.t()), l.conn(), "closed (recorded)");
+                        } else {
+                            out.connectionOpened(nanos(l.t()), l.conn(), clientAddress(l.conn()), playerAddress(l.port()),
+                                    playerAddress(l.port()));
                         }
-                        case TraceRecord.Chunk c -> {
-                            last = c.t();
-                            framer.chunk(c.t(), c.stream(), c.data());
-                        }
-                        case TraceRecord.Lifecycle l -> {
-                            last = l.t();
-                            if (l.isClose()) {
-                                framer.close(l.t(), l.conn());
-                                out.connectionClosed(nanos(l.t()), l.conn(), "closed (recorded)");
-                            } else {
-                                out.connectionOpened(nanos(l.t()), l.conn(), clientAddress(l.conn()),
-                                        playerAddress(l.port()), playerAddress(l.port()));
-                            }
-                        }
-                    }
-                }
+                    });
+                });
             } catch (TraceFormatException e) {
-                problems.add(new LogProblem("line " + reader.line(), nanos(last),
+                problems.add(new LogProblem("line " + reader.line(), last[0],
                         e.getMessage() + "; the trace is read up to the line before"));
             } catch (UncheckedIOException e) {
                 throw e.getCause();
             }
         }
-        framer.endAll(last);
         return problems;
+    }
+
+    private interface LogWrite {
+        void run() throws IOException;
+    }
+
+    private static void write(LogWrite w) {
+        try {
+            w.run();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     static Map<String, String> metadata(Path trace) {

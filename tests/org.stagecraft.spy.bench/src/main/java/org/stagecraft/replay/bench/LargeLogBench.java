@@ -15,7 +15,6 @@ import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.recording.trace.SharedTraces;
 import org.stagecraft.recording.trace.TraceFraming;
 import org.stagecraft.recording.trace.TraceReader;
-import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
@@ -63,13 +62,9 @@ public final class LargeLogBench {
         List<Wire> one = new ArrayList<>();
         List<long[]> lifecycle = new ArrayList<>(); // time, conn, port, open?1:0
         Path trace = SharedTraces.file(TRACE);
-        TraceFraming.frame(trace, e -> one.add(new Wire(Math.round(e.t() * 1e9), e.stream().conn(), e.stream().port(), e)));
         try (TraceReader r = new TraceReader(trace)) {
-            for (TraceRecord rec = r.next(); rec != null; rec = r.next()) {
-                if (rec instanceof TraceRecord.Lifecycle l) {
-                    lifecycle.add(new long[] { Math.round(l.t() * 1e9), l.conn(), l.port(), l.isClose() ? 0 : 1 });
-                }
-            }
+            TraceFraming.frame(r, e -> one.add(new Wire(Math.round(e.t() * 1e9), e.stream().conn(), e.stream().port(), e)),
+                    l -> lifecycle.add(new long[] { Math.round(l.t() * 1e9), l.conn(), l.port(), l.isClose() ? 0 : 1 }));
         }
         long span = one.get(one.size() - 1).time() - one.get(0).time() + 1_000_000;
         int conns = (int) lifecycle.stream().mapToLong(l -> l[1]).max().orElse(1);
