@@ -17,12 +17,12 @@ from stagecraft_player.wire import Framer, Message
 
 
 def traces_dir() -> Path:
-    """``$STAGECRAFT_TRACES`` or the shared traces beside the Stagecraft checkout."""
+    """``$STAGECRAFT_TRACES`` or the checkout's own recorded corpus, ``tests/traces``."""
     env = os.environ.get("STAGECRAFT_TRACES")
-    path = Path(env) if env else Path(__file__).resolve().parents[4] / ".." / "shared" / "traces"
+    path = Path(env) if env else Path(__file__).resolve().parents[4] / "tests" / "traces"
     path = path.resolve()
     if not (path / "README.md").is_file():
-        raise FileNotFoundError(f"the shared Player traces are not at {path} (set STAGECRAFT_TRACES)")
+        raise FileNotFoundError(f"the recorded Player traces are not at {path} (set STAGECRAFT_TRACES)")
     return path
 
 

@@ -28,7 +28,7 @@ import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.recording.peer.RecordedConnection;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.replay.fields.FlatFields;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
@@ -37,7 +37,7 @@ import org.stagecraft.replay.log.SessionLogs;
 
 /** export and replay from the command line, the replay with a real socket client. */
 class ExportAndReplayCommandsTest {
-    private static final Path TRACE = SharedTraces.file("pioneer-laser-sonar.gt.trace.jsonl");
+    private static final Path TRACE = TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl");
 
     /**
      * Threads for the command and its clients: the common pool can have a single thread on a small
@@ -207,7 +207,7 @@ class ExportAndReplayCommandsTest {
 
     @Test
     void replayServesTwoRecordedConnectionsOfOnePortToTwoClientsEachItsOwnBytes() throws Exception {
-        Path sonar = SharedTraces.file("pioneer-laser-sonar.sonar.trace.jsonl");
+        Path sonar = TraceCorpus.file("pioneer-laser-sonar.sonar.trace.jsonl");
         List<RecordedConnection> recorded = RecordedConnection.read(sonar);
         assertEquals(2, recorded.size(), "the sonar trace has two clients on one port");
         assertTrue(!java.util.Arrays.equals(recorded.get(0).serverBytes(), recorded.get(1).serverBytes()),

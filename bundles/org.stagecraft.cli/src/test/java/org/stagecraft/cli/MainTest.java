@@ -21,7 +21,7 @@ import org.stagecraft.player.xdr.XdrReader;
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 
 class MainTest {
 
@@ -33,7 +33,7 @@ class MainTest {
 
     /** The shared recordings; the build passes their folder (see the parent pom). */
     private static Path trace(String name) {
-        return SharedTraces.file(name);
+        return TraceCorpus.file(name);
     }
 
     private static Result run(String... args) {

@@ -27,7 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.recording.peer.RecordedConnection;
 import org.stagecraft.recording.peer.ReplayPeer;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.spy.log.SpyLogReader;
 
 /** {@code stagecraft spy}: options, the relay with its log, the summary lines, a clean stop. */
@@ -65,7 +65,7 @@ class SpyCommandTest {
 
     @Test
     void relaysARecordedSessionLogsItAndStopsCleanly() throws Exception {
-        RecordedConnection rc = RecordedConnection.read(SharedTraces.file("pioneer-laser-sonar.gt.trace.jsonl")).get(0);
+        RecordedConnection rc = RecordedConnection.read(TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl")).get(0);
         Path log = tmp.resolve("session.mcap");
         Lines err = new Lines();
         CountDownLatch stop = new CountDownLatch(1);

@@ -16,7 +16,7 @@ import java.util.Map;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceFraming;
 import org.stagecraft.spy.log.SpyLogWriter;
 
@@ -37,7 +37,7 @@ class SpyLogCommandsTest {
     }
 
     private static Path trace(String name) {
-        return SharedTraces.file(name);
+        return TraceCorpus.file(name);
     }
 
     /** The spy's way: every framed event of the trace, stamped with its receive time. */

@@ -19,7 +19,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.stagecraft.player.wire.Direction;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceReader;
 import org.stagecraft.recording.trace.TraceRecord;
 
@@ -28,7 +28,7 @@ class ReplayPeerTest {
 
     @Test
     void connectionsHoldEveryRecordedByteOfTheirStreams() throws Exception {
-        Path trace = SharedTraces.file("pioneer-laser-sonar.sonar.trace.jsonl");
+        Path trace = TraceCorpus.file("pioneer-laser-sonar.sonar.trace.jsonl");
         List<RecordedConnection> conns = RecordedConnection.read(trace);
         assertEquals(2, conns.size(), "the sonar scenario has two clients");
         for (RecordedConnection c : conns) {
@@ -50,7 +50,7 @@ class ReplayPeerTest {
     @Test
     void twoPeersReplayEveryTraceToEachOtherExactly() throws Exception {
         try (ExecutorService pool = Executors.newVirtualThreadPerTaskExecutor()) {
-            for (Path trace : SharedTraces.all()) {
+            for (Path trace : TraceCorpus.all()) {
                 for (RecordedConnection c : RecordedConnection.read(trace)) {
                     try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
                         Future<ReplayPeer.Result> player = pool.submit(() -> ReplayPeer.serve(server.accept(), c));

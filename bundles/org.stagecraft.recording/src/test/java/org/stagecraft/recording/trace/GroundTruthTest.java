@@ -54,7 +54,7 @@ class GroundTruthTest {
         Map<Integer, RangerState> rangers = new HashMap<>();
 
         List<JsonObject> truth = new ArrayList<>();
-        try (BufferedReader in = Files.newBufferedReader(SharedTraces.file(scenario + ".groundtruth.jsonl"),
+        try (BufferedReader in = Files.newBufferedReader(TraceCorpus.file(scenario + ".groundtruth.jsonl"),
                 StandardCharsets.UTF_8)) {
             in.readLine();
             for (String line = in.readLine(); line != null; line = in.readLine()) {
@@ -113,7 +113,7 @@ class GroundTruthTest {
         List<DecodedMessage> dispatched = new ArrayList<>();
         List<DecodedMessage> queued = new ArrayList<>();
         boolean[] waiting = {false};
-        TraceFraming.frame(SharedTraces.file(scenario + ".trace.jsonl"), e -> {
+        TraceFraming.frame(TraceCorpus.file(scenario + ".trace.jsonl"), e -> {
             if (!(e.event() instanceof WireEvent.Frame f)) {
                 return;
             }

@@ -41,7 +41,7 @@ class RequestRepliesTest {
     @BeforeAll
     static void load() throws IOException {
         PlayerDecoder decoder = new PlayerDecoder(CodecRegistry.standard());
-        TraceFraming.frame(SharedTraces.file("requests.reqclient.trace.jsonl"), e -> {
+        TraceFraming.frame(TraceCorpus.file("requests.reqclient.trace.jsonl"), e -> {
             if (e.stream().dir() == Direction.SERVER_TO_CLIENT && e.event() instanceof WireEvent.Frame f) {
                 MessageType t = f.header().messageType();
                 if (t == MessageType.RESP_ACK || t == MessageType.RESP_NACK) {
@@ -49,7 +49,7 @@ class RequestRepliesTest {
                 }
             }
         });
-        try (BufferedReader in = Files.newBufferedReader(SharedTraces.file("requests.reqclient.steps.jsonl"),
+        try (BufferedReader in = Files.newBufferedReader(TraceCorpus.file("requests.reqclient.steps.jsonl"),
                 StandardCharsets.UTF_8)) {
             in.readLine();
             for (String l = in.readLine(); l != null; l = in.readLine()) {

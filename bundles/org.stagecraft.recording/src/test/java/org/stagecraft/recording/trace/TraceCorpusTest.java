@@ -33,7 +33,7 @@ class TraceCorpusTest {
     private static final PlayerDecoder DECODER = new PlayerDecoder(CodecRegistry.standard());
 
     static List<Path> traces() {
-        return SharedTraces.all();
+        return TraceCorpus.all();
     }
 
     private static List<SessionEvent> frame(Path trace) throws IOException {

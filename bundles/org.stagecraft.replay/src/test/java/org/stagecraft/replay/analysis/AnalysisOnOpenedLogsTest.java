@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
@@ -22,7 +22,7 @@ class AnalysisOnOpenedLogsTest {
 
     @Test
     void windowsDensityAndSeriesAgreeWithAForwardRead() throws Exception {
-        try (SessionLog log = SessionLogs.open(SharedTraces.file("pioneer-laser-sonar.gt.trace.jsonl"))) {
+        try (SessionLog log = SessionLogs.open(TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl"))) {
             List<LogMessage> all = new ArrayList<>();
             try (LogCursor c = log.cursor(log.startNanos())) {
                 for (LogMessage m = c.next(); m != null; m = c.next()) {

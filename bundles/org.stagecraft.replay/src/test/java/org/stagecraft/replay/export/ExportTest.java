@@ -25,7 +25,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.replay.log.Logs;
 import org.stagecraft.replay.fields.FlatFields;
 import org.stagecraft.replay.log.LogFormat;
@@ -41,7 +41,7 @@ import com.google.gson.JsonParser;
 /** CSV, writelog and MCAP exports of the shared traces, each read back and compared with the log. */
 class ExportTest {
     private static final CodecRegistry REGISTRY = CodecRegistry.standard();
-    private static final Path TRACE = SharedTraces.file("pioneer-laser-sonar.gt.trace.jsonl");
+    private static final Path TRACE = TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl");
 
     private static List<LogMessage> frames(SessionLog log) throws IOException {
         return Logs.all(log).stream().filter(m -> m.kind() == LogMessage.Kind.FRAME).toList();
@@ -249,7 +249,7 @@ class ExportTest {
 
     @Test
     void twoClientsOfOneDeviceAreTwoChannelsEachWithItsConnectionsMessagesOnly() throws IOException {
-        Path sonar = SharedTraces.file("pioneer-laser-sonar.sonar.trace.jsonl");
+        Path sonar = TraceCorpus.file("pioneer-laser-sonar.sonar.trace.jsonl");
         Path out = Files.createDirectories(Path.of("target", "test-logs")).resolve("export-sonar.mcap");
         try (SessionLog log = SessionLogs.open(sonar)) {
             List<LogMessage> frames = frames(log);

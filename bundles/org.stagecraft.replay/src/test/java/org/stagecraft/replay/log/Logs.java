@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.stagecraft.player.session.SessionEvent;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceFraming;
 
 /** Test helpers: what a trace holds, framed independently of the code under test. */
@@ -18,7 +18,7 @@ public final class Logs {
     public static final String GT = "pioneer-laser-sonar.gt.trace.jsonl";
 
     public static Path trace(String name) {
-        return SharedTraces.file(name);
+        return TraceCorpus.file(name);
     }
 
     /** Every banner, message and unframed piece of the trace, in the order the framer completes them. */

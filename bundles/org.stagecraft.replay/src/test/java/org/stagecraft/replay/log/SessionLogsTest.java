@@ -26,7 +26,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.wire.WireEvent;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.spy.log.SpyLogWriter;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 
@@ -35,7 +35,7 @@ class SessionLogsTest {
     Path tmp;
 
     static Stream<Path> traces() {
-        return SharedTraces.all().stream();
+        return TraceCorpus.all().stream();
     }
 
     /** The wire entries of a log, in order, against the trace framed on its own. */

@@ -19,7 +19,7 @@ import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.PlayerEncoder;
 import org.stagecraft.player.wire.MessageHeader;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.replay.log.Logs;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
@@ -35,7 +35,7 @@ class WritelogRoundTripTest {
     private static final CodecRegistry REGISTRY = CodecRegistry.standard();
 
     static Stream<Path> traces() {
-        return SharedTraces.all().stream();
+        return TraceCorpus.all().stream();
     }
 
     @ParameterizedTest

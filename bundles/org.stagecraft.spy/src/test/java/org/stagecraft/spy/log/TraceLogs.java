@@ -13,7 +13,7 @@ import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.session.SessionFramer;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceReader;
 import org.stagecraft.recording.trace.TraceRecord;
 
@@ -45,11 +45,11 @@ final class TraceLogs {
     }
 
     static Path tracesDir() {
-        return SharedTraces.dir();
+        return TraceCorpus.dir();
     }
 
     static List<Path> all() {
-        return SharedTraces.all();
+        return TraceCorpus.all();
     }
 
     static long nanos(double t) {

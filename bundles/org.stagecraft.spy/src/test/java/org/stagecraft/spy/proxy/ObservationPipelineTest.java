@@ -27,7 +27,7 @@ import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.codec.PlayerEncoder;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceReader;
 import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.streams.DeliveryPolicy;
@@ -54,7 +54,7 @@ class ObservationPipelineTest {
     }
 
     private static Path trace(String name) {
-        return SharedTraces.file(name);
+        return TraceCorpus.file(name);
     }
 
     /** The two byte streams of a one-connection recording. */

@@ -31,7 +31,7 @@ import org.stagecraft.player.wire.PlayerFramer;
 import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.recording.peer.RecordedConnection;
 import org.stagecraft.recording.peer.ReplayPeer;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.spy.log.LogConnection;
 import org.stagecraft.spy.log.SpyLogReader;
 import org.stagecraft.spy.log.SpyLogWriter;
@@ -71,7 +71,7 @@ class RecordedTrafficThroughSpyTest {
     @Test
     void everyRecordedConnectionAtOnceIsRelayedPublishedAndLoggedExactly() throws Exception {
         List<RecordedConnection> recorded = new ArrayList<>();
-        for (Path trace : SharedTraces.all()) {
+        for (Path trace : TraceCorpus.all()) {
             recorded.addAll(RecordedConnection.read(trace));
         }
         assertTrue(recorded.size() >= 6, "at least six ports' worth of recorded connections");

@@ -3,7 +3,7 @@ package org.stagecraft.tools.session;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
-/** The Player cfg/world files and traces in shared/traces beside the checkout (never optional). */
+/** The Player cfg/world files and traces of the checkout's corpus, tests/traces (never optional). */
 public final class Worlds {
     private Worlds() {
     }
@@ -14,12 +14,12 @@ public final class Worlds {
             return Path.of(prop).toAbsolutePath();
         }
         for (Path p = Path.of("").toAbsolutePath(); p != null; p = p.getParent()) {
-            Path candidate = p.resolveSibling("shared").resolve("traces");
-            if (Files.isDirectory(candidate)) {
+            Path candidate = p.resolve("tests").resolve("traces");
+            if (Files.isRegularFile(candidate.resolve("README.md"))) {
                 return candidate;
             }
         }
-        throw new IllegalStateException("shared/traces not found (set -Dstagecraft.traces=DIR)");
+        throw new IllegalStateException("tests/traces not found (set -Dstagecraft.traces=DIR)");
     }
 
     public static Path file(String name) {

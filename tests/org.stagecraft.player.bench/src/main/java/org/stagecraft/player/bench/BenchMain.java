@@ -17,7 +17,7 @@ public final class BenchMain {
     }
 
     public static void main(String[] args) throws Exception {
-        String traces = System.getProperty("stagecraft.traces", "../shared/traces");
+        String traces = System.getProperty("stagecraft.traces", "tests/traces");
         RecordedTraffic corpus = RecordedTraffic.load(Path.of(traces));
         long messages = 0;
         for (RecordedTraffic.Stream_ s : corpus.streams) {

@@ -39,7 +39,7 @@ public class CodecBenchmark {
 
     @Setup(Level.Trial)
     public void load() throws IOException {
-        traffic = RecordedTraffic.load(Path.of(System.getProperty("stagecraft.traces", "../shared/traces")));
+        traffic = RecordedTraffic.load(Path.of(System.getProperty("stagecraft.traces", "tests/traces")));
         decoder = new PlayerDecoder(CodecRegistry.standard());
     }
 

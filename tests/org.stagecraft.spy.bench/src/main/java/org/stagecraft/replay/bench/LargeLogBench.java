@@ -12,7 +12,7 @@ import java.util.Map;
 import java.util.Random;
 
 import org.stagecraft.player.session.SessionEvent;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceFraming;
 import org.stagecraft.recording.trace.TraceReader;
 import org.stagecraft.replay.log.LogCursor;
@@ -61,7 +61,7 @@ public final class LargeLogBench {
     private static void generate(Path file, long bytes) throws IOException {
         List<Wire> one = new ArrayList<>();
         List<long[]> lifecycle = new ArrayList<>(); // time, conn, port, open?1:0
-        Path trace = SharedTraces.file(TRACE);
+        Path trace = TraceCorpus.file(TRACE);
         try (TraceReader r = new TraceReader(trace)) {
             TraceFraming.frame(r, e -> one.add(new Wire(Math.round(e.t() * 1e9), e.stream().conn(), e.stream().port(), e)),
                     l -> lifecycle.add(new long[] { Math.round(l.t() * 1e9), l.conn(), l.port(), l.isClose() ? 0 : 1 }));

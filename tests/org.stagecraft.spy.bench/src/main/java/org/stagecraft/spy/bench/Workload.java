@@ -9,7 +9,7 @@ import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.PlayerFramer;
 import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.recording.peer.RecordedConnection;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 
 /**
  * The recorded Player sessions the benchmark plays, lengthened so a run lasts long enough to
@@ -24,7 +24,7 @@ record Workload(List<RecordedConnection> sessions, List<RecordedConnection> warm
 
     static Workload load(int sessions, int repeat) throws IOException {
         List<RecordedConnection> all = new ArrayList<>();
-        for (Path trace : SharedTraces.all()) {
+        for (Path trace : TraceCorpus.all()) {
             all.addAll(RecordedConnection.read(trace));
         }
         List<RecordedConnection> picked = new ArrayList<>();

@@ -17,7 +17,7 @@ import org.eclipse.core.runtime.FileLocator;
 import org.eclipse.core.runtime.NullProgressMonitor;
 import org.eclipse.core.runtime.Platform;
 
-/** Workspace projects with the shared Player worlds, the stand-in Player, the recorded traces. */
+/** Workspace projects with the corpus's Player worlds, the stand-in Player, the recorded traces. */
 final class Fixtures {
     private Fixtures() {
     }
@@ -25,7 +25,7 @@ final class Fixtures {
     static Path traces() {
         String prop = System.getProperty("stagecraft.traces");
         if (prop == null || !Files.isDirectory(Path.of(prop))) {
-            throw new IllegalStateException("shared traces not found: -Dstagecraft.traces=" + prop);
+            throw new IllegalStateException("the trace corpus (tests/traces) not found: -Dstagecraft.traces=" + prop);
         }
         return Path.of(prop).toAbsolutePath().normalize();
     }
@@ -41,7 +41,7 @@ final class Fixtures {
         return target;
     }
 
-    /** A new project holding a copy of shared/traces/worlds in its folder "worlds". */
+    /** A new project holding a copy of tests/traces/worlds in its folder "worlds". */
     static IProject projectWithWorlds(String name) throws CoreException, IOException {
         IProject p = ResourcesPlugin.getWorkspace().getRoot().getProject(name);
         if (p.exists()) {

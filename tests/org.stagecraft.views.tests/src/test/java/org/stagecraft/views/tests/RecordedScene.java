@@ -29,7 +29,7 @@ final class RecordedScene {
 
     static Path trace(String name) {
         String dir = System.getProperty("stagecraft.traces");
-        assertNotNull(dir, "-Dstagecraft.traces must name shared/traces");
+        assertNotNull(dir, "-Dstagecraft.traces must name the trace corpus (tests/traces)");
         return Path.of(dir, name);
     }
 

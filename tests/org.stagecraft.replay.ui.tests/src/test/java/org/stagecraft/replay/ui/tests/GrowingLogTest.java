@@ -16,7 +16,7 @@ import org.eclipse.ui.PlatformUI;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.replay.ui.SessionLogEditor;
 import org.stagecraft.spy.log.SpyLogWriter;
 
@@ -40,7 +40,7 @@ class GrowingLogTest {
         Files.deleteIfExists(path);
         try (FileChannel ch = FileChannel.open(path, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
                 SpyLogWriter w = SpyLogWriter.create(ch, Map.of(), 64 << 10);
-                TestLogs.Feeder feeder = new TestLogs.Feeder(SharedTraces.file(TestLogs.TRACE), w)) {
+                TestLogs.Feeder feeder = new TestLogs.Feeder(TraceCorpus.file(TestLogs.TRACE), w)) {
             feeder.writeUntil(10);
             w.flush(); // what a running spy has on disk: chunks, no summary, no footer
             file.refreshLocal(0, null);
@@ -79,7 +79,7 @@ class GrowingLogTest {
         Files.deleteIfExists(path);
         try (FileChannel ch = FileChannel.open(path, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
                 SpyLogWriter w = SpyLogWriter.create(ch, Map.of(), 64 << 10);
-                TestLogs.Feeder feeder = new TestLogs.Feeder(SharedTraces.file(TestLogs.TRACE), w)) {
+                TestLogs.Feeder feeder = new TestLogs.Feeder(TraceCorpus.file(TestLogs.TRACE), w)) {
             feeder.writeUntil(5);
             w.flush();
             file.refreshLocal(0, null);

@@ -14,7 +14,7 @@ import org.eclipse.core.resources.IResource;
 import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.stagecraft.player.session.SessionFramer;
-import org.stagecraft.recording.trace.SharedTraces;
+import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceReader;
 import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.spy.log.SpyLogWriter;
@@ -46,7 +46,7 @@ final class TestLogs {
     static IFile trace() throws Exception {
         IFile f = project().getFile(TRACE);
         if (!f.exists()) {
-            Files.copy(SharedTraces.file(TRACE), f.getLocation().toPath());
+            Files.copy(TraceCorpus.file(TRACE), f.getLocation().toPath());
             f.refreshLocal(IResource.DEPTH_ZERO, null);
         }
         return f;
@@ -59,7 +59,7 @@ final class TestLogs {
         Files.deleteIfExists(out);
         try (FileChannel ch = FileChannel.open(out, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
                 SpyLogWriter w = SpyLogWriter.create(ch, Map.of("scenario", "replay-ui test"), chunkSize)) {
-            write(SharedTraces.file(TRACE), w);
+            write(TraceCorpus.file(TRACE), w);
         }
         f.refreshLocal(IResource.DEPTH_ZERO, null);
         return f;
