@@ -6,7 +6,7 @@ still. It never drives, only turns on the spot, so it is safe to leave running.
 
     python3 laser_sentinel.py [--host localhost] [--port 6665] [--max-range 3]
 
-Runs unchanged against a real Player/Stage (shared/traces/worlds/pioneer-laser-sonar.cfg) and
+Runs unchanged against a real Player/Stage (tests/traces/worlds/pioneer-laser-sonar.cfg) and
 inside a Stagecraft Robot Session (the session puts stagecraft_player on PYTHONPATH).
 """
 

@@ -15,7 +15,7 @@ from stagecraft_player.xdr import XdrReader, XdrWriter
 
 
 def test_header_of_the_readme_example_unpacks_to_its_fields() -> None:
-    # the RESP_ACK to DATAMODE quoted in shared/traces/README.md
+    # the RESP_ACK to DATAMODE quoted in tests/traces/README.md
     raw = bytes.fromhex("0100007f00001df100000001000000000000000400000005" "3fc999999999999a" "0000000000000000")
     h = Header.unpack(raw)
     assert (h.host, h.robot, h.interf, h.index, h.type, h.subtype) == (16777343, 7665, 1, 0, MsgType.RESP_ACK, 5)

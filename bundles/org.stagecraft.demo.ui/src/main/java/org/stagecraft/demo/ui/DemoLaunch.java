@@ -26,8 +26,11 @@ import org.stagecraft.tools.ui.prefs.ToolPreferences;
 /**
  * The demo's Robot Session as an ordinary launch configuration ("Pioneer demo", in Run > Run
  * Configurations), so the user can run it again, change it, or copy it for their own robot: the
- * demo cfg, the chosen Player, the recorded robot program as its one helper tool, spy logs in the
- * project.
+ * demo cfg, the chosen Player, spy logs in the project, and a robot program that fits that Player.
+ * The recorded Player gets the recorded robot program (a helper tool replaying the recording's client
+ * side: open loop, so it only makes sense against the same recording). A real Player gets a real,
+ * closed-loop program, Sunday Stroll, run as the session's robot program, so the robot strolls in the
+ * cave for as long as the demo runs.
  */
 final class DemoLaunch {
     static final String NAME = "Pioneer demo";
@@ -35,14 +38,25 @@ final class DemoLaunch {
     private DemoLaunch() {
     }
 
-    static ILaunchConfiguration configure(IProject project, PlayerChoice player, Path recording) throws CoreException {
+    static final String STROLL = "programs/sunday_stroll.py";
+
+    static ILaunchConfiguration configure(IProject project, PlayerChoice player, Path recording, String python)
+            throws CoreException {
         try {
             List<ToolDefinition> tools = new ArrayList<>(ToolPreferences.tools());
             tools.removeIf(t -> t.name().equals(RecordedPrograms.ROBOT_TOOL));
-            tools.add(RecordedPrograms.robotTool(recording, SessionConfig.PLAYER_DEFAULT_PORT));
+            if (player.recorded()) {
+                tools.add(RecordedPrograms.robotTool(recording, SessionConfig.PLAYER_DEFAULT_PORT));
+            } else if (python != null) {
+                // the interpreter ./stagecraft demo prepared (with pint); the client comes from the bundle
+                ToolPreferences.set(ToolPreferences.PYTHON, python);
+            }
             ToolPreferences.setTools(tools);
         } catch (IOException | BackingStoreException e) {
-            throw new CoreException(Status.error("cannot set up the recorded robot program: " + e.getMessage(), e));
+            throw new CoreException(Status.error("cannot set up the demo's robot program: " + e.getMessage(), e));
+        }
+        if (!player.recorded() && !project.getFile(STROLL).exists()) {
+            throw new CoreException(Status.error("the demo project has no " + STROLL + " to drive the robot with"));
         }
         ILaunchManager lm = DebugPlugin.getDefault().getLaunchManager();
         ILaunchConfigurationType type = lm.getLaunchConfigurationType(LaunchAttributes.TYPE);
@@ -56,7 +70,7 @@ final class DemoLaunch {
             wc = type.newInstance(null, NAME);
         }
         wc.setAttribute(LaunchAttributes.CFG, project.getFile(DemoProject.CFG).getFullPath().toString());
-        wc.setAttribute(LaunchAttributes.PROGRAM, "");
+        wc.setAttribute(LaunchAttributes.PROGRAM, player.recorded() ? "" : project.getFile(STROLL).getFullPath().toString());
         wc.setAttribute(LaunchAttributes.PLAYER, player.program());
         wc.setAttribute(LaunchAttributes.PLAYER_ENVIRONMENT,
                 player.recorded() ? Map.of(RecordedPrograms.RECORDING_VARIABLE, recording.toString()) : Map.of());
@@ -64,7 +78,7 @@ final class DemoLaunch {
         wc.setAttribute(LaunchAttributes.PLAYER_RESTART, "never");
         wc.setAttribute(LaunchAttributes.READY_SECONDS, 30);
         wc.setAttribute(LaunchAttributes.LOG_FOLDER, DemoProject.LOG_FOLDER);
-        wc.setAttribute(LaunchAttributes.TOOLS, List.of(RecordedPrograms.ROBOT_TOOL));
+        wc.setAttribute(LaunchAttributes.TOOLS, player.recorded() ? List.of(RecordedPrograms.ROBOT_TOOL) : List.of());
         return wc.doSave();
     }
 

@@ -15,8 +15,10 @@ import org.stagecraft.demo.PlayerChoice;
  * @param player           "auto" (a real {@code player} on PATH if there is one, else the recording),
  *                         "recorded", or the path of a Player program
  * @param recording        a recording to use instead of the shipped one, or null
+ * @param python           the Python interpreter for the robot program with a real Player (one with
+ *                         pint, set up by {@code ./stagecraft demo}), or null for the preference
  */
-record DemoOptions(boolean enabled, Path status, int exitAfterSeconds, String player, Path recording) {
+record DemoOptions(boolean enabled, Path status, int exitAfterSeconds, String player, Path recording, String python) {
     static final String PREFIX = "stagecraft.demo";
 
     static DemoOptions fromSystemProperties() {
@@ -24,6 +26,7 @@ record DemoOptions(boolean enabled, Path status, int exitAfterSeconds, String pl
         String status = System.getProperty(PREFIX + ".status", "");
         String player = System.getProperty(PREFIX + ".player", "");
         String recording = System.getProperty(PREFIX + ".recording", "");
+        String python = System.getProperty(PREFIX + ".python", "");
         int exitAfter;
         try {
             exitAfter = Math.max(0, Integer.parseInt(System.getProperty(PREFIX + ".exitAfter", "0").trim()));
@@ -31,6 +34,7 @@ record DemoOptions(boolean enabled, Path status, int exitAfterSeconds, String pl
             exitAfter = 0;
         }
         return new DemoOptions(enabled, status.isBlank() ? null : Path.of(status), exitAfter,
-                player.isBlank() ? PlayerChoice.AUTO : player.trim(), recording.isBlank() ? null : Path.of(recording));
+                player.isBlank() ? PlayerChoice.AUTO : player.trim(), recording.isBlank() ? null : Path.of(recording),
+                python.isBlank() ? null : python.trim());
     }
 }

@@ -79,7 +79,8 @@ final class DemoRun {
             status.put("recordedPlayer", player.recorded());
             DemoLog.info(player.recorded() ? "Player: the recorded Player (" + player.program() + ")"
                     : "Player: " + player.program() + " (a real Player/Stage)");
-            ILaunchConfiguration config = DemoLaunch.configure(project, player, recording);
+            status.put("robotProgram", player.recorded() ? RecordedPrograms.ROBOT_TOOL : DemoLaunch.STROLL);
+            ILaunchConfiguration config = DemoLaunch.configure(project, player, recording, options.python());
             DemoEditors.keepConsolesBehind();
 
             display.syncExec(this::openViews);
