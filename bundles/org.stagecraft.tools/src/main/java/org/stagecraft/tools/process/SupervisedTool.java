@@ -5,8 +5,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.OutputStream;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.time.Duration;
@@ -28,7 +26,8 @@ import org.stagecraft.tools.process.ToolListener.Stream;
  */
 public final class SupervisedTool {
     private static final long POLL_MILLIS = 50;
-    private static final int PROBE_TIMEOUT_MILLIS = 250;
+    /** Connect within 250 ms; a server that accepted sends its banner at once, 2 s is generous. */
+    private static final PortProbe PROBE = new PortProbe(250, 2000);
     private static final Duration STOP_GRACE = Duration.ofSeconds(5);
 
     private final ToolSpec spec;
@@ -346,7 +345,7 @@ public final class SupervisedTool {
                 case Readiness.OutputLine l -> run.lineSeen.getCount() == 0;
                 case Readiness.PortsOpen p -> {
                     for (int port : p.ports()) {
-                        if (!open.contains(port) && accepts(p.host(), port)) {
+                        if (!open.contains(port) && PROBE.isOpen(p.host(), port, p.bannerBytes())) {
                             open.add(port);
                         }
                     }
@@ -382,17 +381,6 @@ public final class SupervisedTool {
                 Thread.currentThread().interrupt();
                 return "interrupted while waiting for " + spec.readiness().describe();
             }
-        }
-    }
-
-    private static boolean accepts(String host, int port) {
-        try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(host, port), PROBE_TIMEOUT_MILLIS);
-            // close with a reset: no TIME_WAIT is left behind on either side of the tool's port
-            s.setSoLinger(true, 0);
-            return true;
-        } catch (IOException e) {
-            return false;
         }
     }
 

@@ -120,7 +120,7 @@ public final class RobotSession implements AutoCloseable {
             List<String> command = new ArrayList<>(config.playerCommand());
             command.addAll(List.of("-p", String.valueOf(movedDefault), rewritten.main().toString()));
             ToolSpec playerSpec = new ToolSpec(PLAYER_TOOL_NAME, command, cfg.file().getParent(), config.playerEnvironment(),
-                    Readiness.ports("127.0.0.1", List.copyOf(portMap.values())), config.playerRestart(),
+                    Readiness.playerPorts("127.0.0.1", List.copyOf(portMap.values())), config.playerRestart(),
                     config.playerReadyWithin());
             player = new SupervisedTool(playerSpec, listener);
             player.start();
