@@ -682,6 +682,46 @@ for _c, _filter, _attrs in JOGL_NATIVES:
                       ("Bundle-NativeCode", _attrs)]))
 
 
+# pty4j: Stagecraft runs tools (Player above all) on a pseudo-terminal, so that their C stdio is
+# line-buffered and every line shows as it is written.  Pinned (with what it needs) like zstd-jni:
+# tool supervision must not move with a regeneration.  pty4j and kotlin-stdlib are plain jars,
+# wrapped here with mandatory imports for what they really use (Tycho drops optional ones from
+# test runtimes and products); JNA is the platform's own (first location); slf4j-api is a bundle.
+PTY4J_VERSION = "0.13.12"
+KOTLIN_STDLIB_VERSION = "2.1.21"   # what pty4j 0.13.12's POM asks for
+SLF4J_API_VERSION = "2.0.17"
+PTY4J = [
+    # (groupId, artifactId, version, bsn, mandatory imports)
+    ("org.jetbrains.pty4j", "pty4j", PTY4J_VERSION, "org.jetbrains.pty4j",
+     'com.sun.jna.*;version="[5.14,6)",kotlin.*,org.slf4j.*'),
+    ("org.jetbrains.kotlin", "kotlin-stdlib", KOTLIN_STDLIB_VERSION, "org.jetbrains.kotlin.stdlib", ""),
+]
+
+
+def pty4j_locations():
+    """The target's pty4j locations (no network needed: everything is pinned)."""
+    out = []
+    w = out.append
+    for g, a, v, bsn, imports in PTY4J:
+        w('    <location type="Maven" label="%s %s (wrapped as %s)" includeDependencyDepth="none" '
+          'includeDependencyScopes="compile" includeSource="false" missingManifest="generate">' % (a, v, bsn))
+        w("      <dependencies>")
+        w(dep_xml(g, a, v))
+        w("      </dependencies>")
+        w(instructions_xml("%s:%s::%s" % (g, a, v), wrap_lines(bsn, a, v, imports)))
+        w("    </location>")
+    # slf4j-api 2 requires a provider (osgi.serviceloader capability): slf4j-simple, so pty4j's
+    # warnings reach the IDE's standard error rather than nowhere.
+    w('    <location type="Maven" label="slf4j-api and slf4j-simple (for pty4j)" includeDependencyDepth="none" '
+      'includeDependencyScopes="compile" includeSource="false" missingManifest="error">')
+    w("      <dependencies>")
+    w(dep_xml("org.slf4j", "slf4j-api", SLF4J_API_VERSION))
+    w(dep_xml("org.slf4j", "slf4j-simple", SLF4J_API_VERSION))
+    w("      </dependencies>")
+    w("    </location>")
+    return out
+
+
 def native_code_header(central, g, a, c, attrs):
     """Bundle-NativeCode listing every library in the natives jar's natives/<platform>/ folder."""
     data = central.jar(g, a, JOGL_VERSION, c)
@@ -806,6 +846,7 @@ def main():
     w(dep_xml("com.github.luben", "zstd-jni", ZSTD_JNI_VERSION))
     w("      </dependencies>")
     w("    </location>")
+    out.extend(pty4j_locations())
     if not args.no_jogl:
         w('    <location type="Maven" label="JOGL %s (wrapped, natives as fragments)" includeDependencyDepth="none" '
           'includeDependencyScopes="compile" includeSource="false" missingManifest="generate">' % JOGL_VERSION)

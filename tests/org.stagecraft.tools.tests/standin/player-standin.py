@@ -12,6 +12,9 @@ what the recorded client sent.
 
 It also checks what must hold for the copy: every `worldfile`/`include` path is absolute and exists.
 A line "crash N" on stdin makes it exit with code N (a crash mid-session, on demand).
+With STANDIN_CONNECTION_LOG=FILE it appends one JSON line per connection: the port, whether the
+banner went out ("sent", or "failed: ..." as Player's "failed to send ident string"), how the
+connection ended ("eof" = orderly close, "reset" = Player's "other error on client"), bytes received.
 """
 import base64
 import json
@@ -78,11 +81,42 @@ def recorded(trace, conn):
     return b"".join(c2s), s2c
 
 
+BANNER_BYTES = 32  # Player's PLAYER_IDENT_STRLEN: sent as soon as a client is accepted
+
+
+def log_connection(record):
+    """One JSON line per connection to STANDIN_CONNECTION_LOG, if set: how it began and ended."""
+    path = os.environ.get("STANDIN_CONNECTION_LOG")
+    if not path:
+        return
+    with LOG_LOCK, open(path, "a") as f:
+        f.write(json.dumps(record) + "\n")
+
+
+LOG_LOCK = threading.Lock()
+
+
 def serve(sock, port, expected, chunks):
+    # Like Player: the ident string (banner) at once, the rest only once the client has spoken
+    # (Player sends data only to clients that subscribed).  A client that reads the banner and
+    # closes leaves no unread bytes, so its close is an orderly FIN.
+    data = b"".join(chunks)
+    banner, rest = data[:BANNER_BYTES], data[BANNER_BYTES:]
+    spoke = threading.Event()
+    record = {"port": port, "banner": "not sent", "end": None, "bytes_in": 0}
+
     def send():
         try:
-            for c in chunks:
-                sock.sendall(c)
+            sock.sendall(banner)
+            record["banner"] = "sent"
+        except OSError as e:
+            # what Player reports as "failed to send ident string"
+            record["banner"] = "failed: " + e.__class__.__name__
+            return
+        spoke.wait()
+        try:
+            if rest:
+                sock.sendall(rest)
             sock.shutdown(socket.SHUT_WR)
         except OSError:
             pass
@@ -94,12 +128,19 @@ def serve(sock, port, expected, chunks):
         while True:
             b = sock.recv(65536)
             if not b:
+                record["end"] = "eof"  # the client closed in order (FIN)
                 break
             got += b
-    except OSError:
-        pass
+            spoke.set()
+    except ConnectionResetError:
+        record["end"] = "reset"  # what Player reports as "other error on client"
+    except OSError as e:
+        record["end"] = "error: " + e.__class__.__name__
+    spoke.set()
     sender.join()
     sock.close()
+    record["bytes_in"] = len(got)
+    log_connection(record)
     say("served port=%d bytes_in=%d match=%s" % (port, len(got), "true" if bytes(got) == expected else "false"))
 
 

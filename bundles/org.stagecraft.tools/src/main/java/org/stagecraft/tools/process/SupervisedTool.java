@@ -5,8 +5,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.OutputStream;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.time.Duration;
@@ -28,11 +26,13 @@ import org.stagecraft.tools.process.ToolListener.Stream;
  */
 public final class SupervisedTool {
     private static final long POLL_MILLIS = 50;
-    private static final int PROBE_TIMEOUT_MILLIS = 250;
+    /** Connect within 250 ms; a server that accepted sends its banner at once, 2 s is generous. */
+    private static final PortProbe PROBE = new PortProbe(250, 2000);
     private static final Duration STOP_GRACE = Duration.ofSeconds(5);
 
     private final ToolSpec spec;
     private final ToolListener listener;
+    private final ProcessStarter starter;
     private final CompletableFuture<ToolState> finished = new CompletableFuture<>();
     private ToolState state = ToolState.NEW;
     private Run current;
@@ -44,6 +44,8 @@ public final class SupervisedTool {
     /** One process of the tool (a restart makes a new one). */
     private final class Run {
         final Process process;
+        /** The OS process (a pty4j process has a pid but no handle of its own). */
+        final ProcessHandle handle;
         final CountDownLatch exited = new CountDownLatch(1);
         final CountDownLatch lineSeen = new CountDownLatch(1);
         final List<Thread> readers = new ArrayList<>();
@@ -54,12 +56,18 @@ public final class SupervisedTool {
 
         Run(Process process) {
             this.process = process;
+            this.handle = ProcessHandle.of(process.pid()).orElse(null);
         }
     }
 
     public SupervisedTool(ToolSpec spec, ToolListener listener) {
+        this(spec, listener, ProcessStarter.fromSystemProperties());
+    }
+
+    public SupervisedTool(ToolSpec spec, ToolListener listener, ProcessStarter starter) {
         this.spec = spec;
         this.listener = listener == null ? ToolListener.NONE : listener;
+        this.starter = starter;
     }
 
     public ToolSpec spec() {
@@ -85,7 +93,7 @@ public final class SupervisedTool {
 
     /** The running process, if any. */
     public synchronized ProcessHandle process() {
-        return current != null && current.process.isAlive() ? current.process.toHandle() : null;
+        return current != null && current.process.isAlive() ? current.handle : null;
     }
 
     /** Completes with the final state (stopped, exited or failed) once the tool is down for good. */
@@ -184,26 +192,30 @@ public final class SupervisedTool {
 
     /** Called with the lock held. */
     private Run launch() throws ToolException {
-        ProcessBuilder pb = new ProcessBuilder(spec.command());
-        if (spec.workingDir() != null) {
-            if (!Files.isDirectory(spec.workingDir())) {
-                throw new ToolException("tool '" + name() + "': working directory " + spec.workingDir() + " does not exist");
-            }
-            pb.directory(spec.workingDir().toFile());
+        if (spec.workingDir() != null && !Files.isDirectory(spec.workingDir())) {
+            throw new ToolException("tool '" + name() + "': working directory " + spec.workingDir() + " does not exist");
         }
-        pb.environment().putAll(spec.environment());
-        Process p;
+        ProcessStarter.Started started;
         try {
-            p = pb.start();
+            started = starter.start(spec.command(), spec.workingDir(), spec.environment());
         } catch (IOException e) {
             throw new ToolException("tool '" + name() + "': cannot run '" + spec.command().get(0) + "': " + why(e), e);
         }
+        Process p = started.process();
         Run run = new Run(p);
         current = run;
+        if (started.note() != null) {
+            output(Stream.SUPERVISOR, started.note());
+        }
         output(Stream.SUPERVISOR, "started " + String.join(" ", spec.command()) + " (pid " + p.pid() + ")");
+        if (started.onTerminal()) {
+            output(Stream.SUPERVISOR, "output through a pseudo-terminal (each line as it is written)");
+        }
         run.readers.add(reader(run, p.getInputStream(), Stream.STDOUT));
         run.readers.add(reader(run, p.getErrorStream(), Stream.STDERR));
-        Thread.ofVirtual().name("tool-watch-" + name()).start(() -> watch(run));
+        // Platform threads: a pty's reads and waits are native calls that would pin a virtual
+        // thread's carrier, and three per tool soon starve the spy's virtual threads.
+        Thread.ofPlatform().daemon().name("tool-watch-" + name()).start(() -> watch(run));
         return run;
     }
 
@@ -220,7 +232,7 @@ public final class SupervisedTool {
     }
 
     private Thread reader(Run run, InputStream in, Stream stream) {
-        return Thread.ofVirtual().name("tool-" + stream.name().toLowerCase() + "-" + name()).start(() -> {
+        return Thread.ofPlatform().daemon().name("tool-" + stream.name().toLowerCase() + "-" + name()).start(() -> {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
                 for (String line = r.readLine(); line != null; line = r.readLine()) {
                     if (spec.readiness() instanceof Readiness.OutputLine l && l.pattern().matcher(line).find()) {
@@ -346,7 +358,7 @@ public final class SupervisedTool {
                 case Readiness.OutputLine l -> run.lineSeen.getCount() == 0;
                 case Readiness.PortsOpen p -> {
                     for (int port : p.ports()) {
-                        if (!open.contains(port) && accepts(p.host(), port)) {
+                        if (!open.contains(port) && PROBE.isOpen(p.host(), port, p.bannerBytes())) {
                             open.add(port);
                         }
                     }
@@ -385,19 +397,11 @@ public final class SupervisedTool {
         }
     }
 
-    private static boolean accepts(String host, int port) {
-        try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(host, port), PROBE_TIMEOUT_MILLIS);
-            // close with a reset: no TIME_WAIT is left behind on either side of the tool's port
-            s.setSoLinger(true, 0);
-            return true;
-        } catch (IOException e) {
-            return false;
-        }
-    }
-
     private void kill(Run run) {
-        List<ProcessHandle> tree = ProcessTree.stop(run.process.toHandle(), STOP_GRACE);
+        List<ProcessHandle> tree = run.handle != null ? ProcessTree.stop(run.handle, STOP_GRACE) : List.of();
+        if (run.handle == null) {
+            run.process.destroyForcibly();
+        }
         if (tree.size() > 1) {
             output(Stream.SUPERVISOR, "stopped " + tree.size() + " processes (pids "
                     + String.join(", ", tree.stream().map(h -> String.valueOf(h.pid())).toList()) + ")");

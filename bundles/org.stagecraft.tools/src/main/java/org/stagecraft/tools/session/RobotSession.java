@@ -8,6 +8,7 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CompletableFuture;
 
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
@@ -25,6 +26,7 @@ import org.stagecraft.tools.process.SupervisedTool;
 import org.stagecraft.tools.process.ToolException;
 import org.stagecraft.tools.process.ToolListener;
 import org.stagecraft.tools.process.ToolSpec;
+import org.stagecraft.tools.process.ToolState;
 
 /**
  * One development session against Player, started in the order the parts depend on each other:
@@ -56,11 +58,30 @@ public final class RobotSession implements AutoCloseable {
     private ObservationPipeline pipeline;
     private NetworkSpy spy;
     private boolean closed;
+    private SessionState state = SessionState.STARTING;
+    private final CompletableFuture<String> failed = new CompletableFuture<>();
 
     private RobotSession(SessionConfig config, ToolListener listener) {
         this.config = config;
         this.listener = listener == null ? ToolListener.NONE : listener;
     }
+
+    /** Passes everything on, and sees Player going down for good while the session runs. */
+    private final ToolListener watcher = new ToolListener() {
+        @Override
+        public void output(SupervisedTool tool, Stream stream, String line) {
+            listener.output(tool, stream, line);
+        }
+
+        @Override
+        public void stateChanged(SupervisedTool tool, ToolState from, ToolState to, String detail) {
+            listener.stateChanged(tool, from, to, detail);
+            // FAILED or EXITED: its restart policy has given up (a stop on request ends STOPPED)
+            if (tool == player && (to == ToolState.FAILED || to == ToolState.EXITED)) {
+                playerGone(detail);
+            }
+        }
+    };
 
     /**
      * Starts a session.
@@ -120,12 +141,21 @@ public final class RobotSession implements AutoCloseable {
             List<String> command = new ArrayList<>(config.playerCommand());
             command.addAll(List.of("-p", String.valueOf(movedDefault), rewritten.main().toString()));
             ToolSpec playerSpec = new ToolSpec(PLAYER_TOOL_NAME, command, cfg.file().getParent(), config.playerEnvironment(),
-                    Readiness.ports("127.0.0.1", List.copyOf(portMap.values())), config.playerRestart(),
+                    Readiness.playerPorts("127.0.0.1", List.copyOf(portMap.values())), config.playerRestart(),
                     config.playerReadyWithin());
-            player = new SupervisedTool(playerSpec, listener);
+            player = new SupervisedTool(playerSpec, watcher);
             player.start();
 
             startSpy();
+            synchronized (this) {
+                if (state == SessionState.STARTING) {
+                    state = SessionState.RUNNING;
+                }
+            }
+            if (player.state().isFinal()) {
+                // it went down between its start and now
+                playerGone("ended while the session started");
+            }
         } catch (CfgException e) {
             throw new SessionException("bad Player configuration: " + e.getMessage(), e);
         } catch (ToolException e) {
@@ -209,6 +239,32 @@ public final class RobotSession implements AutoCloseable {
         return closed;
     }
 
+    public synchronized SessionState state() {
+        return state;
+    }
+
+    /**
+     * Completes with the reason when the running session fails: Player went down for good (crashed,
+     * was killed, or exited, and its restart policy does not start it again). The session's other
+     * parts still run until {@link #close()}; whoever shows the session stops it.
+     */
+    public CompletableFuture<String> failed() {
+        return failed;
+    }
+
+    private void playerGone(String detail) {
+        String reason;
+        synchronized (this) {
+            if (state != SessionState.RUNNING) {
+                return; // failing to start is start()'s error; a close is no failure
+            }
+            state = SessionState.FAILED;
+            reason = "Player is gone (" + detail + "); robot programs have nothing to talk to";
+        }
+        listener.output(null, ToolListener.Stream.SUPERVISOR, "session failed: " + reason);
+        failed.complete(reason);
+    }
+
     /**
      * Stops the spy (closing the log after everything observed is written), Player and the tools
      * (whole process trees, in reverse start order), then removes the scratch files. Safe to call
@@ -220,6 +276,9 @@ public final class RobotSession implements AutoCloseable {
             return;
         }
         closed = true;
+        if (state != SessionState.FAILED) {
+            state = SessionState.CLOSED;
+        }
         if (spy != null) {
             spy.close();
         }

@@ -173,6 +173,32 @@ class RobotSessionTest {
     }
 
     @Test
+    void aKilledPlayerThatIsNotRestartedFailsTheSession() throws Exception {
+        int port = Ports.free("127.0.0.1", 1).get(0);
+        try (RobotSession session = RobotSession.start(config(Worlds.file("pioneer-laser-sonar.cfg"), port), rec)) {
+            assertEquals(SessionState.RUNNING, session.state());
+            assertFalse(session.failed().isDone());
+            ProcessHandle player = session.player().process();
+            new ProcessBuilder("kill", "-9", String.valueOf(player.pid())).start().waitFor();
+
+            String reason = session.failed().get(30, TimeUnit.SECONDS);
+            assertEquals(SessionState.FAILED, session.state());
+            assertTrue(reason.startsWith("Player is gone (exited with exit code 137 (signal 9))"), reason);
+            rec.awaitLine(l -> l.tool() == null && l.text().equals("session failed: " + reason), WAIT);
+            assertEquals(ToolState.FAILED, session.player().state());
+        }
+    }
+
+    @Test
+    void aClosedSessionHasNotFailed() throws Exception {
+        int port = Ports.free("127.0.0.1", 1).get(0);
+        RobotSession session = RobotSession.start(config(Worlds.file("pioneer-laser-sonar.cfg"), port), rec);
+        session.close();
+        assertEquals(SessionState.CLOSED, session.state());
+        assertFalse(session.failed().isDone(), "Player stopped on request is no failure");
+    }
+
+    @Test
     void aPlayerCrashIsRestartedOnTheSamePortAndTheSpyGoesOn() throws Exception {
         int port = Ports.free("127.0.0.1", 1).get(0);
         RecordedConnection recorded = RecordedConnection.read(Worlds.traces().resolve(TRACE)).get(0);

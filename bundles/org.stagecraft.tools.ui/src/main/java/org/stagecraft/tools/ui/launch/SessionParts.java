@@ -28,6 +28,8 @@ import org.stagecraft.tools.ui.view.ToolsModel;
  */
 public final class SessionParts implements ToolListener {
     public static final String SPY_PART = "Network Spy";
+    /** The Tools view's row for the session as a whole. */
+    public static final String SESSION_PART = "Session";
     private static final String BUNDLE = "org.stagecraft.tools.ui";
 
     private final ILaunch launch;
@@ -37,6 +39,8 @@ public final class SessionParts implements ToolListener {
     private volatile RobotSession session;
     private SessionPartProcess spy;
     private boolean stopping;
+    /** Why the session failed (Player gone for good), or null. */
+    private volatile String failure;
     /** Stops the session if the IDE exits while it runs (else Player would outlive the IDE and keep its ports). */
     private Thread exitHook;
     /** The session's bus republished on the workbench bus, where the Robot Views listen. */
@@ -78,6 +82,28 @@ public final class SessionParts implements ToolListener {
         p.stdout(s.config().log() != null ? "logging to " + s.config().log() : "not logging (no log folder set)");
         ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.READY, ProcessHandle.current().pid(), 0,
                 null, "spying on " + s.portMap().keySet()));
+        ToolsModel.get().update(new ToolsModel.Row(sessionName, SESSION_PART, ToolState.READY, -1, 0, null, "running"));
+        s.failed().thenAccept(this::sessionFailed);
+    }
+
+    /**
+     * Player is gone for good: the session is failed everywhere a user looks (Tools view, Error Log,
+     * the launch and its processes, which end with a non-zero exit value), and what is left of it stops.
+     */
+    private void sessionFailed(String reason) {
+        failure = reason;
+        log(Status.error(sessionName + ": session failed: " + reason));
+        ToolsModel.get().update(new ToolsModel.Row(sessionName, SESSION_PART, ToolState.FAILED, -1, 0, null, reason));
+        SessionPartProcess p = spy;
+        if (p != null) {
+            p.stderr("[stagecraft] session failed: " + reason);
+        }
+        stopInBackground();
+    }
+
+    /** Why the session failed, or null if it has not. */
+    public String failure() {
+        return failure;
     }
 
     /** The robot program ran in a launch of its own (PyDev): it ends with the session. */
@@ -194,13 +220,18 @@ public final class SessionParts implements ToolListener {
                 ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.STOPPED, -1, 0, null,
                         s.spy().totalConnections() + " connections relayed"));
             }
+            if (failure == null) {
+                ToolsModel.get().update(new ToolsModel.Row(sessionName, SESSION_PART, ToolState.STOPPED, -1, 0, null,
+                        "stopped"));
+            }
         }
         List<SessionPartProcess> all;
         synchronized (this) {
             all = List.copyOf(parts.values());
         }
+        int exit = failure != null ? 1 : 0;
         for (SessionPartProcess p : all) {
-            p.ended(0);
+            p.ended(exit);
         }
     }
 
