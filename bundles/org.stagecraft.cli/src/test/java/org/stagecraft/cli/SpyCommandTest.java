@@ -81,7 +81,7 @@ class SpyCommandTest {
             ReplayPeer.Result program = ReplayPeer.client(new Socket(InetAddress.getLoopbackAddress(), port), rc);
             assertTrue(program.matches(), "the program's bytes differ at " + program.firstDifference());
             assertTrue(served.get(20, TimeUnit.SECONDS).matches());
-            err.await(Pattern.compile("connections 0 open/(1) \\| .* msg/s \\| .* kB/s \\| decode errors 0 \\| dropped 0 B"), 20_000);
+            err.await(Pattern.compile("connections 0 open/(1) \\| .* msg/s \\| .* kB/s \\| undecodable 0 msg \\| unframed 0 B \\| unobserved 0 B"), 20_000);
 
             stop.countDown();
             assertEquals(0, spy.get(20, TimeUnit.SECONDS));
