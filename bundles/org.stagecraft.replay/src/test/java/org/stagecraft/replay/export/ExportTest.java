@@ -186,6 +186,37 @@ class ExportTest {
         }
     }
 
+    /**
+     * Player's readlog keeps replies only from the file's leading reply lines (it stops looking at
+     * the first line that is not a reply) and answers GET_GEOM / GET_CONFIG from those alone.
+     */
+    @Test
+    void writelogExportLeadsWithEveryDevicesGeometryAndConfigReplies() throws IOException {
+        StringWriter out = new StringWriter();
+        try (SessionLog log = SessionLogs.open(TRACE)) {
+            WritelogExport.write(log, ExportFilter.all(), REGISTRY, out);
+        }
+        List<String[]> lines = out.toString().lines().filter(l -> !l.isBlank() && !l.startsWith("#"))
+                .map(l -> l.trim().split("\\s+")).toList();
+        int firstData = 0;
+        while (firstData < lines.size() && lines.get(firstData)[5].equals("4")) {
+            firstData++;
+        }
+        java.util.Set<String> leading = new java.util.TreeSet<>();
+        for (String[] l : lines.subList(0, firstData)) {
+            leading.add(l[3] + ":" + l[4] + " " + l[6]); // interface:index subtype
+        }
+        assertTrue(firstData > 0, "the file starts with replies");
+        for (int i = firstData; i < lines.size(); i++) {
+            assertTrue(!lines.get(i)[5].equals("4"), "reply after the first data line: " + String.join(" ", lines.get(i)));
+        }
+        // the recorded robot program asked for these; readlog must find each before the data
+        for (String needed : List.of("position2d:0 1", "laser:0 1", "sonar:0 1")) {
+            assertTrue(leading.contains(needed), needed + " not among the leading replies " + leading);
+        }
+        assertTrue(firstData < lines.size() && lines.get(firstData)[5].equals("1"), "data follows the replies");
+    }
+
     @Test
     void mcapExportHasEveryMessageAsJsonAndStaysACompleteSpyLog() throws IOException {
         Path out = Files.createDirectories(Path.of("target", "test-logs")).resolve("export-gt.mcap");
