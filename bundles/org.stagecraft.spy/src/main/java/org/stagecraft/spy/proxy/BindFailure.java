@@ -24,7 +24,7 @@ final class BindFailure {
             return "port " + address.getPort() + " is already in use on " + ip;
         }
         if (message.contains("assign requested address") || !isLocal(address.getAddress())) {
-            return ip + " is not an address of this machine (use 127.0.0.1, 0.0.0.0 or one of its own addresses)";
+            return ip + " is not an address of this machine: use 127.0.0.1, 0.0.0.0 or one of its own addresses";
         }
         if (message.contains("permission denied") || message.contains("access")) {
             return "permission denied" + (address.getPort() < 1024 ? ": ports below 1024 need administrator rights" : "");
