@@ -52,6 +52,32 @@ def test_no_server_is_a_clear_connection_error() -> None:
         Client("127.0.0.1", port, timeout=2)
 
 
+@pytest.mark.parametrize("ending", ["reset", "closed"])
+def test_a_connection_ended_before_the_banner_says_so_without_guessing_the_server(ending: str) -> None:
+    """What a robot program sees through the spy when Player behind it is not running."""
+    listener = socket.create_server(("127.0.0.1", 0))
+    port = listener.getsockname()[1]
+
+    def end_at_once() -> None:
+        conn, _ = listener.accept()
+        if ending == "reset":
+            conn.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, b"\1\0\0\0\0\0\0\0")  # linger 0: RST
+        conn.close()
+
+    thread = threading.Thread(target=end_at_once, daemon=True)
+    thread.start()
+    try:
+        with pytest.raises(ConnectionLost) as lost:
+            Client("127.0.0.1", port, timeout=5)
+        message = str(lost.value)
+        assert f"Player at 127.0.0.1:{port}: the connection was {ending} before Player's banner arrived" in message
+        assert "Network Spy, Player may not be running" in message and "check the spy's messages" in message
+        assert "is it a Player server" not in message
+    finally:
+        thread.join(10)
+        listener.close()
+
+
 def test_a_server_that_is_not_player_is_named() -> None:
     server = OneShotServer(b"SSH-2.0-OpenSSH_9.6\r\n".ljust(32, b"\0"), then="hang")
     try:

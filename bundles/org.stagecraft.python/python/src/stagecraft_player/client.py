@@ -166,9 +166,14 @@ class Client:
                 self._fill(deadline, "the server's banner")
         except PlayerProtocolError as e:
             raise PlayerConnectionError(f"{self.host}:{self.port} is not a Player server: {e}") from None
-        except ConnectionLost:
-            raise ConnectionLost(f"{self.where} closed the connection before sending its banner "
-                                 f"(is it a Player server?)") from None
+        except ConnectionLost as e:
+            # A reset or end before the banner does not say what the server is: with Stagecraft's
+            # Network Spy on this port it is what a client sees when Player behind the spy is not
+            # running, so say what happened and where to look instead of guessing.
+            how = "reset" if isinstance(e.__context__, ConnectionResetError) else "closed"
+            raise ConnectionLost(f"{self.where}: the connection was {how} before Player's banner arrived; if it "
+                                 f"goes through Stagecraft's Network Spy, Player may not be running behind it "
+                                 f"(check the spy's messages)") from None
         return self._framer.ident
 
     @property

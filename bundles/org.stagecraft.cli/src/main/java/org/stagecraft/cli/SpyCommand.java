@@ -4,12 +4,15 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.net.InetSocketAddress;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
@@ -19,6 +22,7 @@ import org.stagecraft.spy.proxy.LogRecorder;
 import org.stagecraft.spy.proxy.NetworkSpy;
 import org.stagecraft.spy.proxy.ObservationPipeline;
 import org.stagecraft.spy.proxy.Route;
+import org.stagecraft.spy.proxy.WireObserver;
 import org.stagecraft.streams.StreamBus;
 
 /**
@@ -28,10 +32,10 @@ import org.stagecraft.streams.StreamBus;
  */
 final class SpyCommand {
     static final String USAGE = "usage: stagecraft spy --listen [HOST:]PORT --to HOST:PORT [--listen ... --to ...]"
-            + " [--bind ADDR] [--log FILE]";
+            + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS]";
     private static final long OBSERVER_QUEUE_BYTES = 64L << 20;
 
-    record Options(List<Route> routes, Path log) {
+    record Options(List<Route> routes, Path log, Duration upstreamGrace) {
     }
 
     int run(String[] args, PrintStream out, PrintStream err) {
@@ -43,22 +47,39 @@ final class SpyCommand {
             err.println(USAGE);
             return 2;
         }
-        // Ctrl-C runs the shutdown hooks: ours asks serve() to stop and waits until the log is closed.
+        // Ctrl-C (SIGINT) and SIGTERM run the shutdown hooks: ours asks serve() to stop and waits
+        // until the log is closed. A JVM ending on a signal exits with 128 + the signal (130, 143)
+        // whatever its hooks do, unless a hook halts it with a status of its own: a stop on request
+        // that closed everything cleanly is a success, so the hook halts with serve()'s status.
+        // (Catching the signals themselves needs sun.misc.Signal, an unsupported API that this
+        // OSGi bundle would have to import from jdk.unsupported.) Nothing else in this JVM needs
+        // its hooks: the log is closed and the streams are flushed before the halt.
         CountDownLatch stop = new CountDownLatch(1);
         CountDownLatch cleanedUp = new CountDownLatch(1);
+        AtomicInteger status = new AtomicInteger(1);
         Thread hook = new Thread(() -> {
             stop.countDown();
             try {
-                cleanedUp.await(30, TimeUnit.SECONDS);
+                if (cleanedUp.await(30, TimeUnit.SECONDS)) {
+                    out.flush();
+                    err.flush();
+                    Runtime.getRuntime().halt(status.get());
+                }
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
         }, "stagecraft-spy-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
         try {
-            return serve(o, err, stop, System.console() != null);
+            status.set(serve(o, err, stop, System.console() != null));
+            return status.get();
         } finally {
             cleanedUp.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook); // stopped otherwise: the hook has nothing to do
+            } catch (IllegalStateException shuttingDown) {
+                // a signal stopped us: the hook is running and ends the JVM with our status
+            }
         }
     }
 
@@ -67,7 +88,17 @@ final class SpyCommand {
      * on a terminal), then closes the spy, drains the pipeline and closes the log.
      */
     int serve(Options o, PrintStream err, CountDownLatch stop, boolean tty) {
-        StreamBus bus = new StreamBus();
+        NetworkSpy spy = new NetworkSpy(o.routes(), WireObserver.NONE).upstreamGrace(o.upstreamGrace());
+        // Player refusing is said at once, on its own line (after the live line on a terminal).
+        spy.addListener(n -> err.print((tty ? "\n" : "") + "stagecraft spy: " + n.text() + (tty ? "" : "\n")));
+        // Bind first: a port in use must not leave an empty log behind (or truncate an old one).
+        try {
+            spy.bind();
+        } catch (IOException e) {
+            err.println("stagecraft spy: " + e.getMessage());
+            spy.close();
+            return 1;
+        }
         LogRecorder recorder = null;
         if (o.log() != null) {
             try {
@@ -76,14 +107,15 @@ final class SpyCommand {
                 meta.put("routes", o.routes().toString());
                 recorder = new LogRecorder(SpyLogWriter.create(o.log(), meta));
             } catch (IOException e) {
-                err.println("stagecraft spy: cannot write the log " + o.log() + ": " + e.getMessage());
-                bus.close();
+                err.println("stagecraft spy: cannot write the log " + o.log() + ": " + LogFileProblem.reason(o.log(), e));
+                spy.close();
                 return 1;
             }
         }
+        StreamBus bus = new StreamBus();
         ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder,
                 OBSERVER_QUEUE_BYTES);
-        NetworkSpy spy = new NetworkSpy(o.routes(), pipeline);
+        spy.observer(pipeline);
         try {
             spy.start();
         } catch (IOException e) {
@@ -131,6 +163,7 @@ final class SpyCommand {
         List<Route> routes = new ArrayList<>();
         String bind = Route.DEFAULT_BIND;
         Path log = null;
+        Duration grace = NetworkSpy.DEFAULT_UPSTREAM_GRACE;
         List<String> listens = new ArrayList<>();
         List<String> tos = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
@@ -144,6 +177,7 @@ final class SpyCommand {
                 case "--to" -> tos.add(v);
                 case "--bind" -> bind = v;
                 case "--log" -> log = Path.of(v);
+                case "--upstream-grace" -> grace = seconds(a, v);
                 default -> throw new IllegalArgumentException("unknown option " + a);
             }
         }
@@ -156,7 +190,20 @@ final class SpyCommand {
             InetSocketAddress to = Route.address(tos.get(i), "127.0.0.1");
             routes.add(new Route(listen, to));
         }
-        return new Options(routes, log);
+        return new Options(routes, log, grace);
+    }
+
+    private static Duration seconds(String option, String text) {
+        double s;
+        try {
+            s = Double.parseDouble(text);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(option + " '" + text + "' is not a number of seconds", e);
+        }
+        if (!(s >= 0) || s > 3600) {
+            throw new IllegalArgumentException(option + " " + text + " is not 0..3600 seconds");
+        }
+        return Duration.ofNanos(Math.round(s * 1e9));
     }
 
     /** The live one-line summary: rates since the previous line, totals since the start. */
@@ -177,9 +224,10 @@ final class SpyCommand {
             double secs = Math.max(1e-3, (now - lastNanos) / 1e9);
             long messages = pipeline.messages();
             long bytes = spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT);
-            String line = String.format("connections %d open/%d | %.0f msg/s | %.1f kB/s | decode errors %d | dropped %d B%s",
+            String line = String.format(Locale.ROOT,
+                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s",
                     spy.openConnections(), spy.totalConnections(), (messages - lastMessages) / secs,
-                    (bytes - lastBytes) / secs / 1000, pipeline.decodeProblems() + pipeline.unframedBytes(),
+                    (bytes - lastBytes) / secs / 1000, pipeline.decodeProblems(), pipeline.unframedBytes(),
                     pipeline.droppedBytes(), pipeline.recorderError() != null ? " | " + pipeline.recorderError() : "");
             lastMessages = messages;
             lastBytes = bytes;
@@ -188,10 +236,12 @@ final class SpyCommand {
         }
 
         String totals() {
-            return String.format("%d connections, %d messages, %d bytes forwarded, %d decode errors, %d bytes unobserved%s",
+            return String.format(Locale.ROOT,
+                    "%d connections, %d messages, %d bytes forwarded, %d undecodable messages, %d unframed bytes,"
+                            + " %d bytes unobserved%s",
                     spy.totalConnections(), pipeline.messages(),
                     spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT),
-                    pipeline.decodeProblems(), pipeline.droppedBytes(),
+                    pipeline.decodeProblems(), pipeline.unframedBytes(), pipeline.droppedBytes(),
                     pipeline.recorderError() != null ? "; " + pipeline.recorderError() : "");
         }
     }

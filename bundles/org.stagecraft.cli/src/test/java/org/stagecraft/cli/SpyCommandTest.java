@@ -2,16 +2,20 @@ package org.stagecraft.cli;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
+import java.io.IOException;
 import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
@@ -81,7 +85,7 @@ class SpyCommandTest {
             ReplayPeer.Result program = ReplayPeer.client(new Socket(InetAddress.getLoopbackAddress(), port), rc);
             assertTrue(program.matches(), "the program's bytes differ at " + program.firstDifference());
             assertTrue(served.get(20, TimeUnit.SECONDS).matches());
-            err.await(Pattern.compile("connections 0 open/(1) \\| .* msg/s \\| .* kB/s \\| decode errors 0 \\| dropped 0 B"), 20_000);
+            err.await(Pattern.compile("connections 0 open/(1) \\| .* msg/s \\| .* kB/s \\| undecodable 0 msg \\| unframed 0 B \\| unobserved 0 B"), 20_000);
 
             stop.countDown();
             assertEquals(0, spy.get(20, TimeUnit.SECONDS));
@@ -130,6 +134,141 @@ class SpyCommandTest {
             int code = new SpyCommand().serve(o, new PrintStream(err, true, StandardCharsets.UTF_8), new CountDownLatch(1), false);
             assertEquals(1, code);
             assertTrue(err.text().contains("cannot listen on 127.0.0.1:" + taken.getLocalPort()), err.text());
+            assertTrue(err.text().contains("already in use"), err.text());
+        }
+    }
+
+    private int serveOnce(Lines err, String... args) {
+        return new SpyCommand().serve(SpyCommand.parse(args), new PrintStream(err, true, StandardCharsets.UTF_8),
+                new CountDownLatch(1), false);
+    }
+
+    @Test
+    void aPortInUseLeavesNoLogAndAnOldLogUntouched() throws Exception {
+        try (ServerSocket taken = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
+            String port = String.valueOf(taken.getLocalPort());
+            Path fresh = tmp.resolve("fresh.mcap");
+            assertEquals(1, serveOnce(new Lines(), "--listen", port, "--to", "7665", "--log", fresh.toString()));
+            assertFalse(Files.exists(fresh), "no empty log is left behind");
+
+            Path old = tmp.resolve("old.mcap");
+            Files.writeString(old, "yesterday's session");
+            assertEquals(1, serveOnce(new Lines(), "--listen", port, "--to", "7665", "--log", old.toString()));
+            assertEquals("yesterday's session", Files.readString(old));
+        }
+    }
+
+    @Test
+    void aLogThatCannotBeWrittenSaysWhy() throws Exception {
+        Lines err = new Lines();
+        Path missing = tmp.resolve("no-such-folder").resolve("s.mcap");
+        assertEquals(1, serveOnce(err, "--listen", "0", "--to", "7665", "--log", missing.toString()));
+        assertTrue(err.text().contains("cannot write the log " + missing + ": no such folder " + missing.getParent()),
+                err.text());
+
+        Lines err2 = new Lines();
+        assertEquals(1, serveOnce(err2, "--listen", "0", "--to", "7665", "--log", tmp.toString()));
+        assertTrue(err2.text().contains("cannot write the log " + tmp + ": it is a folder"), err2.text());
+    }
+
+    @Test
+    void anAddressOfAnotherMachineIsSaidToBeOne() {
+        Lines err = new Lines();
+        // 192.0.2.1: TEST-NET-1 (RFC 5737), like 8.8.8.8 never an address of this machine
+        assertEquals(1, serveOnce(err, "--listen", "0", "--to", "7665", "--bind", "192.0.2.1"));
+        assertTrue(err.text().contains("cannot listen on 192.0.2.1:0 (192.0.2.1 is not an address of this machine"),
+                err.text());
+        assertFalse(err.text().contains("already in use"), err.text());
+    }
+
+    @Test
+    void aRouteToTheSpyItselfIsRefused() {
+        for (String[] args : new String[][] {{"--listen", "6665", "--to", "localhost:6665"},
+                {"--listen", "6665", "--to", "127.0.0.1:6665", "--bind", "0.0.0.0"}, {"--listen", "6665", "--to", "6665"}}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> SpyCommand.parse(args));
+            assertTrue(e.getMessage().contains("leads back to the spy itself"), e.getMessage());
+        }
+        Lines err = new Lines();
+        Lines out = new Lines();
+        assertEquals(2, new SpyCommand().run(new String[] {"--listen", "6665", "--to", "6665"},
+                new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8)));
+        assertTrue(err.text().contains("stagecraft spy: the route 127.0.0.1:6665 -> 127.0.0.1:6665 leads back"), err.text());
+    }
+
+    @Test
+    void upstreamGraceIsAnOptionInSeconds() {
+        assertEquals(Duration.ofSeconds(5), SpyCommand.parse(new String[] {"--listen", "1", "--to", "2"}).upstreamGrace());
+        assertEquals(Duration.ofMillis(1500),
+                SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--upstream-grace", "1.5"}).upstreamGrace());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--upstream-grace", "soon"}));
+        assertTrue(e.getMessage().contains("--upstream-grace 'soon' is not a number of seconds"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class,
+                () -> SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--upstream-grace", "-1"}));
+        assertTrue(e.getMessage().contains("not 0..3600 seconds"), e.getMessage());
+    }
+
+    @Test
+    void aRefusalAfterTheGracePeriodIsSaidOnStderr() throws Exception {
+        int deadPort;
+        try (ServerSocket s = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
+            deadPort = s.getLocalPort();
+        }
+        Lines err = new Lines();
+        CountDownLatch stop = new CountDownLatch(1);
+        try (ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor()) {
+            SpyCommand.Options o = SpyCommand.parse(new String[] {"--listen", "0", "--to", "127.0.0.1:" + deadPort,
+                    "--upstream-grace", "0.3"});
+            Future<Integer> spy = threads.submit(() -> new SpyCommand().serve(o, new PrintStream(err, true, StandardCharsets.UTF_8),
+                    stop, false));
+            int port = Integer.parseInt(err.await(Pattern.compile("spying 127\\.0\\.0\\.1:(\\d+) -> "), 20_000));
+            try (Socket program = new Socket(InetAddress.getLoopbackAddress(), port)) {
+                assertThrows(IOException.class, () -> program.getInputStream().read());
+            }
+            err.await(Pattern.compile("stagecraft spy: Player at 127\\.0\\.0\\.1:" + deadPort
+                    + " refused connection (1) from .* for 0\\.3 s; the robot program's connection was closed"), 20_000);
+            assertTrue(err.text().contains("refused connection 1 from"), err.text());
+            assertTrue(err.text().contains("retrying for up to 0.3 s"), "the wait is said first:\n" + err.text());
+            stop.countDown();
+            assertEquals(0, spy.get(20, TimeUnit.SECONDS));
+        }
+    }
+
+    /** Unframed bytes are counted in bytes under one name in the live line and the final line. */
+    @Test
+    void unframedBytesHaveOneNameAndOneValueLiveAndAtTheEnd() throws Exception {
+        byte[] banner = new byte[32];
+        byte[] ident = "Player v.3.1.1".getBytes(StandardCharsets.US_ASCII);
+        System.arraycopy(ident, 0, banner, 0, ident.length);
+        byte[] garbage = new byte[100]; // zeros: no message header has size 0 and type 0
+        Lines err = new Lines();
+        CountDownLatch stop = new CountDownLatch(1);
+        try (ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();
+                ServerSocket player = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
+            threads.submit(() -> {
+                try (Socket s = player.accept()) {
+                    s.getOutputStream().write(banner);
+                    s.getOutputStream().write(garbage);
+                    s.shutdownOutput();
+                    s.getInputStream().readAllBytes();
+                }
+                return null;
+            });
+            SpyCommand.Options o = SpyCommand.parse(new String[] {"--listen", "0", "--to", "127.0.0.1:" + player.getLocalPort()});
+            Future<Integer> spy = threads.submit(() -> new SpyCommand().serve(o, new PrintStream(err, true, StandardCharsets.UTF_8),
+                    stop, false));
+            int port = Integer.parseInt(err.await(Pattern.compile("spying 127\\.0\\.0\\.1:(\\d+) -> "), 20_000));
+            try (Socket program = new Socket(InetAddress.getLoopbackAddress(), port)) {
+                program.shutdownOutput();
+                assertEquals(banner.length + garbage.length, program.getInputStream().readAllBytes().length);
+            }
+            String live = err.await(Pattern.compile("connections 0 open/1 \\| .* \\| undecodable 0 msg \\| unframed (\\d+) B"),
+                    20_000);
+            assertEquals(String.valueOf(garbage.length), live);
+            stop.countDown();
+            assertEquals(0, spy.get(20, TimeUnit.SECONDS));
+            assertTrue(err.text().contains("0 undecodable messages, " + garbage.length + " unframed bytes, 0 bytes unobserved"),
+                    err.text());
         }
     }
 }

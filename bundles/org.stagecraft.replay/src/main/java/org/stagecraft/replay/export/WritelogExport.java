@@ -13,6 +13,13 @@ import org.stagecraft.replay.writelog.WritelogWriter;
 /**
  * A log (or the part a filter takes) as a Player writelog file, for Player's readlog. The Player
  * version in the file's metadata is the recorded server's, from its banner.
+ *
+ * <p>The geometry and configuration replies come first, before any data, wherever the client asked
+ * for them in the session: readlog stores replies only while it reads the file's leading reply
+ * lines (its {@code reading_configs} phase ends at the first line that is not a reply) and answers
+ * a client's GET_GEOM / GET_CONFIG from what it stored, so a reply further down would be missing
+ * when the client asks at its start. Player's own writelog writes them there too (its
+ * {@code WriteGeometries} at setup).
  */
 public final class WritelogExport {
     private WritelogExport() {
@@ -21,7 +28,16 @@ public final class WritelogExport {
     public static WritelogWriter.Summary write(SessionLog log, ExportFilter filter, CodecRegistry registry, Writer out)
             throws IOException {
         WritelogWriter w = new WritelogWriter(out, registry, playerVersion(log), log.path().getFileName().toString());
-        CsvExport.forEach(log, filter, registry, w::write);
+        CsvExport.forEach(log, filter, registry, m -> {
+            if (WritelogWriter.isReply(m)) {
+                w.write(m);
+            }
+        });
+        CsvExport.forEach(log, filter, registry, m -> {
+            if (!WritelogWriter.isReply(m)) {
+                w.write(m);
+            }
+        });
         w.flush();
         return w.summary();
     }

@@ -73,6 +73,15 @@ public final class WritelogWriter {
         out.write("# numbers have every digit needed to read back to the recorded values.\n");
     }
 
+    /**
+     * Whether a logged message is a reply from Player (RESP_ACK, server to client): what readlog
+     * needs on the file's leading lines (see {@code WritelogExport}).
+     */
+    public static boolean isReply(LogMessage m) {
+        return m.kind() == LogMessage.Kind.FRAME && m.decoded() != null && m.dir() == Direction.SERVER_TO_CLIENT
+                && m.decoded().header().type() == MessageType.RESP_ACK.code();
+    }
+
     /** Writes a logged message if it is a server-to-client Player message writelog can hold. */
     public boolean write(LogMessage m) throws IOException {
         if (m.kind() != LogMessage.Kind.FRAME || m.decoded() == null) {

@@ -186,6 +186,55 @@ class ExportTest {
         }
     }
 
+    /**
+     * Player's readlog keeps replies only from the file's leading reply lines (it stops looking at
+     * the first line that is not a reply) and answers GET_GEOM / GET_CONFIG from those alone.
+     */
+    @Test
+    void writelogExportLeadsWithEveryDevicesGeometryAndConfigReplies() throws IOException {
+        StringWriter out = new StringWriter();
+        try (SessionLog log = SessionLogs.open(TRACE)) {
+            WritelogExport.write(log, ExportFilter.all(), REGISTRY, out);
+        }
+        List<String[]> lines = out.toString().lines().filter(l -> !l.isBlank() && !l.startsWith("#"))
+                .map(l -> l.trim().split("\\s+")).toList();
+        int firstData = 0;
+        while (firstData < lines.size() && lines.get(firstData)[5].equals("4")) {
+            firstData++;
+        }
+        java.util.Set<String> leading = new java.util.TreeSet<>();
+        for (String[] l : lines.subList(0, firstData)) {
+            leading.add(l[3] + ":" + l[4] + " " + l[6]); // interface:index subtype
+        }
+        assertTrue(firstData > 0, "the file starts with replies");
+        for (int i = firstData; i < lines.size(); i++) {
+            assertTrue(!lines.get(i)[5].equals("4"), "reply after the first data line: " + String.join(" ", lines.get(i)));
+        }
+        // every geometry reply the recorded robot program got must be among them, although in the
+        // session some came after data had flowed
+        java.util.Set<String> asked = new java.util.TreeSet<>();
+        boolean dataBeforeAReply = false;
+        boolean dataSeen = false;
+        try (SessionLog log = SessionLogs.open(TRACE)) {
+            for (LogMessage m : org.stagecraft.replay.log.Logs.all(log)) {
+                if (m.kind() != LogMessage.Kind.FRAME || m.decoded() == null || m.dir() != Direction.SERVER_TO_CLIENT) {
+                    continue;
+                }
+                MessageHeader h = m.decoded().header();
+                if (WritelogWriter.isReply(m) && h.subtype() == 1) { // GET_GEOM is subtype 1 in every interface here
+                    asked.add(REGISTRY.interfaceName(h.interf()) + ":" + h.index() + " 1");
+                    dataBeforeAReply |= dataSeen;
+                } else if (h.type() == 1) {
+                    dataSeen = true;
+                }
+            }
+        }
+        assertTrue(asked.contains("position2d:0 1"), "the recording has geometry replies: " + asked);
+        assertTrue(dataBeforeAReply, "the recording has data before a reply, so the order matters");
+        assertTrue(leading.containsAll(asked), "asked " + asked + ", leading replies " + leading);
+        assertTrue(firstData < lines.size() && lines.get(firstData)[5].equals("1"), "data follows the replies");
+    }
+
     @Test
     void mcapExportHasEveryMessageAsJsonAndStaysACompleteSpyLog() throws IOException {
         Path out = Files.createDirectories(Path.of("target", "test-logs")).resolve("export-gt.mcap");

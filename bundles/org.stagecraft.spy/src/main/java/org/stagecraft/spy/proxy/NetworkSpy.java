@@ -3,16 +3,20 @@ package org.stagecraft.spy.proxy;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
-import java.net.BindException;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
 
@@ -30,6 +34,14 @@ public final class NetworkSpy implements AutoCloseable {
     private static final int BUFFER = 64 * 1024;
     private static final int CONNECT_TIMEOUT_MS = 5_000;
     /**
+     * How long a robot program's connection waits for Player when Player does not listen yet: a
+     * program started together with Player often connects first, and libplayerc dies of SIGPIPE on
+     * a reset instead of reporting it.
+     */
+    public static final Duration DEFAULT_UPSTREAM_GRACE = Duration.ofSeconds(5);
+    /** Pause between connect attempts during the grace period: a refusal comes back at once. */
+    private static final long RETRY_INTERVAL_MS = 100;
+    /**
      * One platform thread per direction, blocking in read(): the kernel wakes exactly the thread
      * whose socket has data, so a robot program's small request is not queued behind bulk
      * transfers on other connections (virtual threads share a few carriers first come, first served,
@@ -42,7 +54,12 @@ public final class NetworkSpy implements AutoCloseable {
     }
 
     private final List<Route> routes;
-    private final WireObserver observer;
+    private volatile WireObserver observer;
+    private volatile Duration upstreamGrace = DEFAULT_UPSTREAM_GRACE;
+    private final List<SpyListener> listeners = new CopyOnWriteArrayList<>();
+    /** Opens on close(): ends the waits between connect attempts at once. */
+    private final CountDownLatch stopped = new CountDownLatch(1);
+    private boolean accepting;
     private final List<ServerSocket> servers = new ArrayList<>();
     private final Set<Relay> relays = ConcurrentHashMap.newKeySet();
     private final AtomicInteger nextId = new AtomicInteger(1);
@@ -61,12 +78,51 @@ public final class NetworkSpy implements AutoCloseable {
     }
 
     /**
-     * Binds every listen address, then starts accepting. If one cannot be bound, none stays bound
-     * and the exception names the address.
+     * How long each connection keeps trying to reach its upstream (Player) when it refuses, before
+     * the robot program's connection is closed; {@link Duration#ZERO} tries once. Default
+     * {@link #DEFAULT_UPSTREAM_GRACE}. May be changed at any time; a connection uses the value it
+     * finds when it is accepted.
      */
-    public synchronized void start() throws IOException {
+    public NetworkSpy upstreamGrace(Duration grace) {
+        if (grace.isNegative()) {
+            throw new IllegalArgumentException("the upstream grace period cannot be negative: " + grace);
+        }
+        this.upstreamGrace = grace;
+        return this;
+    }
+
+    public Duration upstreamGrace() {
+        return upstreamGrace;
+    }
+
+    /** Replaces the observer given to the constructor; only before {@link #start()}. */
+    public synchronized NetworkSpy observer(WireObserver o) {
+        if (accepting) {
+            throw new IllegalStateException("the observer is set before the spy starts");
+        }
+        this.observer = o;
+        return this;
+    }
+
+    /** Adds a listener for {@link SpyNotice}s (Player refusing connections). */
+    public NetworkSpy addListener(SpyListener l) {
+        listeners.add(l);
+        return this;
+    }
+
+    public void removeListener(SpyListener l) {
+        listeners.remove(l);
+    }
+
+    /**
+     * Binds every listen address without accepting yet, so a caller can learn that a port is taken
+     * before it creates anything (a log file) for the session. If one cannot be bound, none stays
+     * bound and the exception names the address and why. {@link #start()} binds too if this was
+     * not called.
+     */
+    public synchronized void bind() throws IOException {
         if (!servers.isEmpty() || closed) {
-            throw new IllegalStateException("a spy starts once");
+            throw new IllegalStateException("a spy binds once");
         }
         for (Route r : routes) {
             ServerSocket s = new ServerSocket();
@@ -79,11 +135,22 @@ public final class NetworkSpy implements AutoCloseable {
                     bound.close();
                 }
                 servers.clear();
-                String why = e instanceof BindException ? "already in use or not allowed" : e.getMessage();
-                throw new IOException("cannot listen on " + Route.text(r.listen()) + " (" + why + ")", e);
+                throw new IOException("cannot listen on " + Route.text(r.listen()) + " ("
+                        + BindFailure.explain(r.listen(), e) + ")", e);
             }
             servers.add(s);
         }
+    }
+
+    /** Binds (unless {@link #bind()} did) and starts accepting on every route. */
+    public synchronized void start() throws IOException {
+        if (accepting || closed) {
+            throw new IllegalStateException("a spy starts once");
+        }
+        if (servers.isEmpty()) {
+            bind();
+        }
+        accepting = true;
         for (int i = 0; i < routes.size(); i++) {
             Route r = routes.get(i);
             ServerSocket s = servers.get(i);
@@ -112,6 +179,7 @@ public final class NetworkSpy implements AutoCloseable {
     @Override
     public synchronized void close() {
         closed = true;
+        stopped.countDown();
         for (ServerSocket s : servers) {
             try {
                 s.close();
@@ -145,7 +213,7 @@ public final class NetworkSpy implements AutoCloseable {
     /** One robot program's connection and its upstream twin. */
     private final class Relay {
         final Socket client;
-        final Socket upstream = new Socket();
+        volatile Socket upstream = new Socket();
         final Route route;
         final ConnectionInfo info;
         final AtomicInteger running = new AtomicInteger(2);
@@ -162,20 +230,81 @@ public final class NetworkSpy implements AutoCloseable {
 
         void run() {
             observe(() -> observer.opened(info, WallClock.nowNanos()));
-            try {
-                client.setTcpNoDelay(true);
-                upstream.setTcpNoDelay(true);
-                upstream.connect(route.upstream(), CONNECT_TIMEOUT_MS);
-            } catch (IOException e) {
+            String refused = connectUpstream();
+            if (refused != null) {
                 // The robot program already has a connection; resetting it is the closest to
                 // what a direct connect to a closed port shows.
                 resetQuietly(client);
                 closeQuietly(upstream);
-                finish("upstream " + info.upstream() + " refused: " + e.getMessage());
+                finish("upstream " + info.upstream() + " refused: " + refused);
                 return;
             }
             startThread("spy-s2c-" + info.id(), () -> pump(upstream, client, Direction.SERVER_TO_CLIENT));
             pump(client, upstream, Direction.CLIENT_TO_SERVER);
+        }
+
+        /**
+         * Connects to the upstream, retrying while it refuses until the grace period is over. The
+         * robot program's bytes wait meanwhile in its socket's receive buffer, so nothing is lost
+         * or reordered. Returns null once connected, else the last refusal.
+         */
+        String connectUpstream() {
+            long started = System.nanoTime();
+            long graceNanos = upstreamGrace.toNanos();
+            boolean waited = false;
+            while (true) {
+                Socket attempt = new Socket(); // a failed connect closes its socket: a new one per attempt
+                upstream = attempt;
+                IOException failure;
+                try {
+                    client.setTcpNoDelay(true);
+                    attempt.setTcpNoDelay(true);
+                    attempt.connect(route.upstream(), CONNECT_TIMEOUT_MS);
+                    if (waited) {
+                        double secs = (System.nanoTime() - started) / 1e9;
+                        notice(SpyNotice.Kind.UPSTREAM_REACHED, String.format(Locale.ROOT,
+                                "Player at %s accepted connection %d from %s after %.1f s", info.upstream(), info.id(),
+                                info.client(), secs));
+                    }
+                    return null;
+                } catch (IOException e) {
+                    failure = e;
+                    closeQuietly(attempt);
+                }
+                String why = failure.getMessage() == null ? failure.getClass().getSimpleName() : failure.getMessage();
+                if (closed) {
+                    return "spy stopped while waiting for the upstream (" + why + ")";
+                }
+                boolean graceLeft = System.nanoTime() - started + RETRY_INTERVAL_MS * 1_000_000 < graceNanos;
+                if (!graceLeft) {
+                    notice(SpyNotice.Kind.UPSTREAM_REFUSED, "Player at " + info.upstream() + " refused connection "
+                            + info.id() + " from " + info.client() + " (" + why + ")"
+                            + (graceNanos > 0 ? " for " + seconds(upstreamGrace) + " s" : "")
+                            + "; the robot program's connection was closed. Is Player running and listening on "
+                            + info.upstream() + "?");
+                    return why;
+                }
+                if (!waited) {
+                    waited = true;
+                    notice(SpyNotice.Kind.UPSTREAM_WAITING, "Player at " + info.upstream() + " refused connection "
+                            + info.id() + " from " + info.client() + " (" + why + "); retrying for up to "
+                            + seconds(upstreamGrace) + " s");
+                }
+                try {
+                    stopped.await(RETRY_INTERVAL_MS, TimeUnit.MILLISECONDS); // close() cuts the pause short
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return why;
+                }
+            }
+        }
+
+        void notice(SpyNotice.Kind kind, String text) {
+            SpyNotice n = new SpyNotice(info, kind, text);
+            observe(() -> observer.notice(n, WallClock.nowNanos()));
+            for (SpyListener l : listeners) {
+                observe(() -> l.notice(n));
+            }
         }
 
         void pump(Socket from, Socket to, Direction dir) {
@@ -234,6 +363,11 @@ public final class NetworkSpy implements AutoCloseable {
     /** How often the observer threw (it must not; the wire went on regardless). */
     public long observerFailures() {
         return observerFailures.sum();
+    }
+
+    private static String seconds(Duration d) {
+        double s = d.toMillis() / 1000.0;
+        return s == Math.rint(s) ? String.valueOf((long) s) : String.valueOf(s);
     }
 
     private static void resetQuietly(Socket s) {

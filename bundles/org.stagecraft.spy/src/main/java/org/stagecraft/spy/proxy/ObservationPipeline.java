@@ -43,6 +43,9 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             implements Item {
     }
 
+    private record Noticed(ConnectionInfo connection, SpyNotice notice, long t) implements Item {
+    }
+
     private record Closed(ConnectionInfo connection, long t, String reason) implements Item {
     }
 
@@ -100,6 +103,12 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         }
         // One forwarding thread per direction, so the lost count belongs exactly before this chunk.
         queue.add(new Chunk(connection, dir, data, timeNanos, lost.getAndSet(0)));
+    }
+
+    /** Recorded in the log and published as a {@link SpyDiagnostic} of the server-to-client stream, at offset 0. */
+    @Override
+    public void notice(SpyNotice notice, long timeNanos) {
+        queue.add(new Noticed(notice.connection(), notice, timeNanos));
     }
 
     @Override
@@ -204,6 +213,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 f.framer().accept(c.data());
                 drain(f, c.connection(), c.dir(), c.t());
             }
+            case Noticed n -> diagnostic(n.connection(), Direction.SERVER_TO_CLIENT, 0, n.notice().text(), n.t());
             case Closed cl -> {
                 for (Direction d : Direction.values()) {
                     StreamRef ref = new StreamRef(cl.connection().id(), d);

@@ -2,6 +2,8 @@ package org.stagecraft.spy.proxy;
 
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.NetworkInterface;
+import java.net.SocketException;
 import java.net.UnknownHostException;
 
 /**
@@ -19,6 +21,43 @@ public record Route(InetSocketAddress listen, InetSocketAddress upstream) {
         }
         if (upstream.getPort() < 1 || upstream.getPort() > 65535) {
             throw new IllegalArgumentException("upstream port " + upstream.getPort() + " is not 1..65535");
+        }
+        if (leadsBackToItself(listen, upstream)) {
+            throw new IllegalArgumentException("the route " + text(listen) + " -> " + text(upstream)
+                    + " leads back to the spy itself (it would relay its own connections to itself without end);"
+                    + " --to must name where Player really listens: another port, or another machine");
+        }
+    }
+
+    /**
+     * Whether connecting to {@code upstream} would reach the spy's own listening socket: same port,
+     * and the upstream address is the listen address, or the listen address is the wildcard
+     * (0.0.0.0) and the upstream is any address of this machine, or the upstream is the wildcard
+     * (which a connect treats as this machine).
+     */
+    static boolean leadsBackToItself(InetSocketAddress listen, InetSocketAddress upstream) {
+        InetAddress l = listen.getAddress();
+        InetAddress u = upstream.getAddress();
+        if (l == null || u == null || listen.getPort() == 0 || listen.getPort() != upstream.getPort()) {
+            return false;
+        }
+        if (l.equals(u)) {
+            return true;
+        }
+        if (u.isAnyLocalAddress()) {
+            return isThisMachine(l);
+        }
+        return l.isAnyLocalAddress() && isThisMachine(u);
+    }
+
+    private static boolean isThisMachine(InetAddress a) {
+        if (a.isAnyLocalAddress() || a.isLoopbackAddress()) {
+            return true;
+        }
+        try {
+            return NetworkInterface.getByInetAddress(a) != null;
+        } catch (SocketException e) {
+            return false;
         }
     }
 

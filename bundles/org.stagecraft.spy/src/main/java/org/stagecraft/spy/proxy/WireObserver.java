@@ -15,6 +15,13 @@ public interface WireObserver {
     /** Both directions have ended (closed, reset, or the upstream refused). */
     void closed(ConnectionInfo connection, long timeNanos, String reason);
 
+    /**
+     * Something the user must see about the connection (Player refusing it), also given to the
+     * spy's {@link SpyListener}s. Between {@link #opened} and {@link #closed}.
+     */
+    default void notice(SpyNotice notice, long timeNanos) {
+    }
+
     WireObserver NONE = new WireObserver() {
         @Override
         public void opened(ConnectionInfo connection, long timeNanos) {

@@ -12,10 +12,12 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -202,7 +204,10 @@ class NetworkSpyTest {
         int deadPort = up.getLocalPort();
         up.close(); // nothing listens there now
         RecordingObserver observer = new RecordingObserver();
-        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", deadPort)), observer);
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", deadPort)), observer)
+                .upstreamGrace(Duration.ZERO);
+        List<SpyNotice> notices = new CopyOnWriteArrayList<>();
+        spy.addListener(notices::add);
         cleanup.add(spy);
         spy.start();
         Socket client = connect(spy);
@@ -210,6 +215,111 @@ class NetworkSpyTest {
         assertTrue(observer.closed.await(10, TimeUnit.SECONDS));
         assertTrue(observer.reason.contains("refused"), observer.reason);
         assertTrue(observer.reason.contains(":" + deadPort), observer.reason);
+        assertEquals(List.of(SpyNotice.Kind.UPSTREAM_REFUSED), notices.stream().map(SpyNotice::kind).toList(),
+                "no grace: one attempt, one refusal said");
+    }
+
+    /** A robot program started with Player often connects first: it must wait for Player, not be reset. */
+    @Test
+    void aClientThatComesBeforePlayerIsRelayedByteExactOnceItListens() throws Exception {
+        int playerPort;
+        try (ServerSocket probe = upstream()) {
+            playerPort = probe.getLocalPort(); // free again once closed: Player will listen there later
+        }
+        RecordingObserver observer = new RecordingObserver();
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", playerPort)), observer)
+                .upstreamGrace(Duration.ofSeconds(30));
+        List<SpyNotice> notices = new CopyOnWriteArrayList<>();
+        CountDownLatch waiting = new CountDownLatch(1);
+        spy.addListener(n -> {
+            notices.add(n);
+            if (n.kind() == SpyNotice.Kind.UPSTREAM_WAITING) {
+                waiting.countDown();
+            }
+        });
+        cleanup.add(spy);
+        spy.start();
+        byte[] request = random(200_000, 11);
+        byte[] reply = random(300_000, 12);
+        Socket client = connect(spy);
+        CompletableFuture<Void> sent = run(() -> {
+            try {
+                client.getOutputStream().write(request); // sent before Player listens: must wait, not vanish
+                client.shutdownOutput();
+            } catch (IOException e) {
+                throw new RuntimeException(e);
+            }
+        });
+        assertTrue(waiting.await(20, TimeUnit.SECONDS), "the spy says it waits for Player");
+
+        ServerSocket player = new ServerSocket();
+        cleanup.add(player);
+        player.setReuseAddress(true);
+        player.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), playerPort));
+        CompletableFuture<byte[]> playerGot = async(() -> {
+            try (Socket s = player.accept()) {
+                s.getOutputStream().write(reply);
+                s.shutdownOutput();
+                return s.getInputStream().readAllBytes();
+            } catch (IOException e) {
+                throw new RuntimeException(e);
+            }
+        });
+        byte[] clientGot = client.getInputStream().readAllBytes();
+        sent.get(20, TimeUnit.SECONDS);
+        assertArrayEquals(request, playerGot.get(20, TimeUnit.SECONDS));
+        assertArrayEquals(reply, clientGot);
+        assertTrue(observer.closed.await(10, TimeUnit.SECONDS));
+        assertEquals("closed", observer.reason);
+        assertEquals(List.of(SpyNotice.Kind.UPSTREAM_WAITING, SpyNotice.Kind.UPSTREAM_REACHED),
+                notices.stream().map(SpyNotice::kind).toList());
+        assertTrue(notices.get(0).text().contains("127.0.0.1:" + playerPort), notices.get(0).text());
+    }
+
+    @Test
+    void aRefusalAfterTheGracePeriodIsSaidToListenersAndTheObserver() throws Exception {
+        ServerSocket up = upstream();
+        int deadPort = up.getLocalPort();
+        up.close();
+        RecordingObserver observer = new RecordingObserver();
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", deadPort)), observer)
+                .upstreamGrace(Duration.ofMillis(400));
+        List<SpyNotice> notices = new CopyOnWriteArrayList<>();
+        spy.addListener(notices::add);
+        cleanup.add(spy);
+        spy.start();
+        long t0 = System.nanoTime();
+        Socket client = connect(spy);
+        assertThrows(SocketException.class, () -> client.getInputStream().read());
+        assertTrue(System.nanoTime() - t0 >= 300_000_000L, "the spy kept trying for the grace period");
+        assertTrue(observer.closed.await(10, TimeUnit.SECONDS));
+        assertEquals(List.of(SpyNotice.Kind.UPSTREAM_WAITING, SpyNotice.Kind.UPSTREAM_REFUSED),
+                notices.stream().map(SpyNotice::kind).toList());
+        SpyNotice refused = notices.get(1);
+        assertTrue(refused.kind().isFailure());
+        assertTrue(refused.text().contains("Player at 127.0.0.1:" + deadPort + " refused connection 1"), refused.text());
+        assertTrue(refused.text().contains("0.4 s"), refused.text());
+        assertEquals(notices, observer.notices, "the observer (log and bus) hears the same notices");
+    }
+
+    @Test
+    void anAddressOfAnotherMachineIsNamedAsSuch() {
+        // 192.0.2.1 is TEST-NET-1 (RFC 5737): never an address of this machine
+        NetworkSpy spy = new NetworkSpy(List.of(Route.of("192.0.2.1", 0, "127.0.0.1", 7665)), WireObserver.NONE);
+        cleanup.add(spy);
+        IOException e = assertThrows(IOException.class, spy::start);
+        assertTrue(e.getMessage().contains("192.0.2.1 is not an address of this machine"), e.getMessage());
+    }
+
+    @Test
+    void bindFailuresAreToldApartByTheirCause() {
+        InetSocketAddress low = new InetSocketAddress(InetAddress.getLoopbackAddress(), 80);
+        assertEquals("permission denied: ports below 1024 need administrator rights",
+                BindFailure.explain(low, new java.net.BindException("Permission denied")));
+        assertEquals("port 80 is already in use on 127.0.0.1",
+                BindFailure.explain(low, new java.net.BindException("Address already in use")));
+        assertTrue(BindFailure.explain(low, new java.net.BindException("Cannot assign requested address"))
+                .contains("not an address of this machine"));
     }
 
     @Test
@@ -223,6 +333,7 @@ class NetworkSpyTest {
                 Route.loopback(bound.getPort(), "127.0.0.1", 7001)), WireObserver.NONE);
         IOException e = assertThrows(IOException.class, clash::start);
         assertTrue(e.getMessage().contains("127.0.0.1:" + bound.getPort()), e.getMessage());
+        assertTrue(e.getMessage().contains("already in use"), e.getMessage());
         assertTrue(clash.boundAddresses().isEmpty(), "nothing stays bound after a failed start");
     }
 
@@ -324,6 +435,12 @@ class NetworkSpyTest {
         final java.io.ByteArrayOutputStream s2c = new java.io.ByteArrayOutputStream();
         final CountDownLatch closed = new CountDownLatch(1);
         volatile String reason;
+        final List<SpyNotice> notices = new CopyOnWriteArrayList<>();
+
+        @Override
+        public void notice(SpyNotice notice, long timeNanos) {
+            notices.add(notice);
+        }
 
         @Override
         public void opened(ConnectionInfo connection, long timeNanos) {

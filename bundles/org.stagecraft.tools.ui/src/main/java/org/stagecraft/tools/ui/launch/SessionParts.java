@@ -13,6 +13,7 @@ import org.eclipse.debug.core.DebugException;
 import org.eclipse.debug.core.ILaunch;
 import org.stagecraft.core.streams.WorkbenchBus;
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.spy.proxy.SpyNotice;
 import org.stagecraft.streams.Subscription;
 import org.stagecraft.tools.process.SupervisedTool;
 import org.stagecraft.tools.process.ToolListener;
@@ -84,6 +85,23 @@ public final class SessionParts implements ToolListener {
                 null, "spying on " + s.portMap().keySet()));
         ToolsModel.get().update(new ToolsModel.Row(sessionName, SESSION_PART, ToolState.READY, -1, 0, null, "running"));
         s.failed().thenAccept(this::sessionFailed);
+        s.spy().addListener(n -> spyNotice(p, n));
+    }
+
+    /**
+     * Player refusing a robot program's connection: said in the spy's console at once, shown in the
+     * Tools view's row and, when the program lost its connection, in the Error Log; the log and the
+     * bus have it too, but nobody watches those for it.
+     */
+    private void spyNotice(SessionPartProcess p, SpyNotice n) {
+        if (!n.kind().isFailure()) {
+            p.stdout("[stagecraft] " + n.text());
+            return;
+        }
+        p.stderr("[stagecraft] " + n.text());
+        log(Status.error(sessionName + ": " + n.text()));
+        ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.READY, ProcessHandle.current().pid(), 0,
+                null, n.text()));
     }
 
     /**
