@@ -1,6 +1,8 @@
 package org.stagecraft.spy.proxy;
 
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.spy.hold.HoldAction;
+import org.stagecraft.spy.hold.HoldState;
 
 /**
  * Sees what the spy forwards, after it has been forwarded. Called on the forwarding threads, so
@@ -14,6 +16,14 @@ public interface WireObserver {
 
     /** Both directions have ended (closed, reset, or the upstream refused). */
     void closed(ConnectionInfo connection, long timeNanos, String reason);
+
+    /** A robot hold injected or held back a message (only when the user enabled holds). */
+    default void holdAction(HoldAction action, long timeNanos) {
+    }
+
+    /** The robot hold changed (enabled, held, reasons). */
+    default void holdState(HoldState state, long timeNanos) {
+    }
 
     WireObserver NONE = new WireObserver() {
         @Override
