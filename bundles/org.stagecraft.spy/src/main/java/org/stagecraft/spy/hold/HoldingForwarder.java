@@ -233,6 +233,7 @@ public final class HoldingForwarder {
                 currentHeld = true;
                 heldBytes.reset();
                 heldBytes.write(header);
+                flushPending();
                 heldUpstreamAt = upstreamOffset;
             } else {
                 write(header);
@@ -290,6 +291,7 @@ public final class HoldingForwarder {
             }
             Last last = e.getValue();
             byte[] msg = ZeroVelocity.command(last.header(), last.velState() >= 0 ? last.velState() : 1);
+            flushPending(); // the bytes before it first: its upstream offset is where it really lands
             long at = upstreamOffset;
             write(msg);
             injected++;
