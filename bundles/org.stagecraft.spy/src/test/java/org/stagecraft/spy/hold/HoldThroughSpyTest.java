@@ -24,6 +24,8 @@ import java.util.Random;
 import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.RepeatedTest;
+import org.junit.jupiter.api.RepetitionInfo;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -229,10 +231,10 @@ class HoldThroughSpyTest {
         return MESSAGES.stream().filter(m -> m.motion() && m.offset() >= from && m.end() <= to).count();
     }
 
-    @Test
-    void holdsSwitchedAtRandomWhileTheRelayRunsStillCutOnlyAtBoundaries(@TempDir Path dir) throws Exception {
+    @RepeatedTest(8)
+    void holdsSwitchedAtRandomWhileTheRelayRunsStillCutOnlyAtBoundaries(RepetitionInfo rep, @TempDir Path dir) throws Exception {
         Setup s = setup(dir, true);
-        Random rnd = new Random(11);
+        Random rnd = new Random(11 + rep.getCurrentRepetition());
         RobotHold holds = s.spy().holds();
         try (Socket program = program(s.spy())) {
             OutputStream out = program.getOutputStream();
@@ -256,6 +258,9 @@ class HoldThroughSpyTest {
             }
             holds.releaseAll(HoldReason.EMERGENCY_STOP);
             program.shutdownOutput();
+            // closing a socket with Player's banner unread would reset it, and a reset can discard
+            // bytes the spy has not read yet: the program stays connected until Player has it all
+            s.player().awaitEnd();
         }
         byte[] player = s.player().awaitEnd();
         s.spy().close();
@@ -306,8 +311,8 @@ class HoldThroughSpyTest {
             s.spy().holds().hold(HoldReason.SUSPENDED);
             writeChunked(out, PROGRAM, PROGRAM.length / 2, PROGRAM.length, new Random(4));
             program.shutdownOutput();
+            assertArrayEquals(PROGRAM, s.player().awaitEnd()); // before closing: see above
         }
-        assertArrayEquals(PROGRAM, s.player().awaitEnd());
         s.spy().close();
         s.pipeline().close();
         try (SpyLogReader r = SpyLogReader.open(s.log())) {
