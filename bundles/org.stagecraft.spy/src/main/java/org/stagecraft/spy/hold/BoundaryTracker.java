@@ -27,6 +27,9 @@ final class BoundaryTracker {
     private long payloadLeft;
     private long offset;
     private long messageStart;
+    private int interf;
+    private int type;
+    /** Made from the header bytes only when asked for: most messages need just interface and type. */
     private MessageHeader current;
     private String lostReason;
 
@@ -73,9 +76,26 @@ final class BoundaryTracker {
         return java.util.Arrays.copyOf(header, headerFill == 0 ? MessageHeader.SIZE : headerFill);
     }
 
-    /** The current message's header, once {@link #HEADER_DONE} was returned for it. */
+    /** The current message's header, once {@link #HEADER_DONE} was returned for it (until the next begins). */
     MessageHeader header() {
+        if (current == null) {
+            current = MessageHeader.read(header, 0);
+        }
         return current;
+    }
+
+    /** The current message's interface code (valid like {@link #header()}). */
+    int interf() {
+        return interf;
+    }
+
+    /** The current message's type code (valid like {@link #header()}). */
+    int type() {
+        return type;
+    }
+
+    private int word(int at) {
+        return (header[at] & 0xff) << 24 | (header[at + 1] & 0xff) << 16 | (header[at + 2] & 0xff) << 8 | (header[at + 3] & 0xff);
     }
 
     /** How many of the next {@code available} bytes belong to the current part. */
@@ -107,6 +127,7 @@ final class BoundaryTracker {
             default -> {
                 if (headerFill == 0) {
                     messageStart = offset;
+                    current = null;
                 }
                 System.arraycopy(buf, off, header, headerFill, n);
                 headerFill += n;
@@ -114,15 +135,20 @@ final class BoundaryTracker {
                 if (headerFill < MessageHeader.SIZE) {
                     return 0;
                 }
-                MessageHeader h = MessageHeader.read(header, 0);
-                String problem = h.problem();
-                if (problem != null) {
-                    lostReason = "not a Player message at offset " + messageStart + ": " + problem;
+                // the checks of MessageHeader.problem(), without making a header object per message
+                interf = word(8);
+                int index = word(12);
+                type = word(16);
+                int subtype = word(20);
+                int size = word(36);
+                if (type < 1 || type > 6 || (interf & 0xFFFF0000) != 0 || (index & 0xFFFF0000) != 0
+                        || (subtype & 0xFFFFFF00) != 0 || size < 0 || size > MessageHeader.MAX_PAYLOAD) {
+                    lostReason = "not a Player message at offset " + messageStart + ": "
+                            + MessageHeader.read(header, 0).problem();
                     return LOST;
                 }
-                current = h;
                 headerFill = 0;
-                payloadLeft = h.sizeUnsigned();
+                payloadLeft = size;
                 return payloadLeft == 0 ? HEADER_DONE | MESSAGE_DONE : HEADER_DONE;
             }
         }

@@ -223,8 +223,7 @@ public final class HoldingForwarder {
     // ---- message by message -----------------------------------------------------------------------
 
     private void headerDone() throws IOException {
-        MessageHeader h = tracker.header();
-        currentMotion = MotionCommand.isMotion(h);
+        currentMotion = MotionCommand.isMotion(tracker.interf(), tracker.type());
         motionPayload.reset();
         if (headerKept) {
             headerKept = false;

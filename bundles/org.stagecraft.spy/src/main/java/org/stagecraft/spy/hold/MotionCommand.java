@@ -32,7 +32,11 @@ public final class MotionCommand {
     }
 
     public static boolean isMotion(MessageHeader h) {
-        return h.interf() == Position2d.CODE && h.type() == MessageType.CMD.code();
+        return isMotion(h.interf(), h.type());
+    }
+
+    static boolean isMotion(int interf, int type) {
+        return interf == Position2d.CODE && type == MessageType.CMD.code();
     }
 
     /**
