@@ -123,7 +123,7 @@ class HoldThroughSpyTest {
     }
 
     private record Setup(FakePlayer player, NetworkSpy spy, ObservationPipeline pipeline, StreamBus bus, Path log,
-            List<StreamMessage> holdStream) {
+            List<StreamMessage> holdStream, java.util.concurrent.Semaphore holdStreamIn) {
     }
 
     private Setup setup(Path dir, boolean enableHolds) throws IOException {
@@ -132,9 +132,14 @@ class HoldThroughSpyTest {
         StreamBus bus = new StreamBus();
         cleanup.add(bus);
         List<StreamMessage> holdStream = Collections.synchronizedList(new ArrayList<>());
-        bus.subscribe(StreamPattern.exactly(HoldStreams.STATE), DeliveryPolicy.lossless(10_000), holdStream::add);
-        bus.subscribe(HoldStreams.injected(), DeliveryPolicy.lossless(10_000), holdStream::add);
-        bus.subscribe(HoldStreams.heldBack(), DeliveryPolicy.lossless(10_000), holdStream::add);
+        java.util.concurrent.Semaphore in = new java.util.concurrent.Semaphore(0); // the bus delivers on its own threads
+        org.stagecraft.streams.StreamConsumer keep = m -> {
+            holdStream.add(m);
+            in.release();
+        };
+        bus.subscribe(StreamPattern.exactly(HoldStreams.STATE), DeliveryPolicy.lossless(10_000), keep);
+        bus.subscribe(HoldStreams.injected(), DeliveryPolicy.lossless(10_000), keep);
+        bus.subscribe(HoldStreams.heldBack(), DeliveryPolicy.lossless(10_000), keep);
         Path log = dir.resolve("spy.mcap");
         ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()),
                 new LogRecorder(SpyLogWriter.create(log, Map.of())), 64 << 20);
@@ -142,7 +147,7 @@ class HoldThroughSpyTest {
         cleanup.add(spy);
         spy.holds().setEnabled(enableHolds);
         spy.start();
-        return new Setup(player, spy, pipeline, bus, log, holdStream);
+        return new Setup(player, spy, pipeline, bus, log, holdStream, in);
     }
 
     private static Socket program(NetworkSpy spy) throws IOException {
@@ -222,6 +227,7 @@ class HoldThroughSpyTest {
             assertEquals(held(seg1, seg2), heldLogged);
         }
         // on the bus: enable (not held), hold on, the injection, each held command, hold off
+        assertTrue(s.holdStreamIn().tryAcquire((int) (3 + 1 + held(seg1, seg2)), 20, TimeUnit.SECONDS));
         assertEquals(3 + 1 + held(seg1, seg2), s.holdStream().size());
         assertTrue(s.holdStream().stream().anyMatch(m -> m.payload() instanceof HoldState h && h.held()
                 && h.description().contains("suspended in the debugger")));

@@ -240,11 +240,13 @@ class HoldingForwarderTest {
         for (long seed = 100; seed < 108; seed++) {
             Path file = dir.resolve("hold-" + seed + ".mcap");
             StreamBus bus = new StreamBus();
-            List<StreamMessage> published = Collections.synchronizedList(new ArrayList<>());
-            bus.subscribe(HoldStreams.injected(), DeliveryPolicy.lossless(100_000), published::add);
-            bus.subscribe(HoldStreams.heldBack(), DeliveryPolicy.lossless(100_000), published::add);
-            List<StreamMessage> states = Collections.synchronizedList(new ArrayList<>());
-            bus.subscribe(org.stagecraft.streams.StreamPattern.exactly(HoldStreams.STATE), DeliveryPolicy.lossless(100_000), states::add);
+            // the bus delivers on its own threads: count arrivals, await them
+            java.util.concurrent.Semaphore actionsIn = new java.util.concurrent.Semaphore(0);
+            java.util.concurrent.Semaphore statesIn = new java.util.concurrent.Semaphore(0);
+            bus.subscribe(HoldStreams.injected(), DeliveryPolicy.lossless(100_000), m -> actionsIn.release());
+            bus.subscribe(HoldStreams.heldBack(), DeliveryPolicy.lossless(100_000), m -> actionsIn.release());
+            bus.subscribe(org.stagecraft.streams.StreamPattern.exactly(HoldStreams.STATE), DeliveryPolicy.lossless(100_000),
+                    m -> statesIn.release());
             ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()),
                     new LogRecorder(SpyLogWriter.create(file, Map.of())), 64 << 20);
             long[] t = { 1_000 };
@@ -264,8 +266,13 @@ class HoldingForwarderTest {
             pipeline.chunk(CONN, Direction.CLIENT_TO_SERVER, PROGRAM.clone(), t[0]++);
             pipeline.closed(CONN, t[0]++, "done");
             pipeline.close();
-            bus.close();
             assertNull(pipeline.recorderError());
+            assertTrue(actionsIn.tryAcquire(run.reports().actions.size(), 20, TimeUnit.SECONDS),
+                    "every injection and held-back message is on the bus");
+            assertTrue(statesIn.tryAcquire(run.reports().states.size(), 20, TimeUnit.SECONDS));
+            bus.close();
+            assertEquals(0, actionsIn.availablePermits(), "and nothing more");
+            assertEquals(0, statesIn.availablePermits());
 
             try (SpyLogReader r = SpyLogReader.open(file)) {
                 assertArrayEquals(PROGRAM, r.programBytes(1), "seed " + seed + ": the program's bytes, held ones included");
@@ -292,8 +299,6 @@ class HoldingForwarderTest {
                 }
                 assertEquals(MESSAGES.size(), wire, "the wire channel holds the program's messages, nothing of Stagecraft's");
             }
-            assertEquals(run.reports().actions.size(), published.size(), "every injection and held-back message is on the bus");
-            assertEquals(run.reports().states.size(), states.size());
         }
     }
 
