@@ -33,6 +33,18 @@ final class Layout {
 
     static final String METADATA_SESSION = "stagecraft.session";
 
+    /**
+     * Stagecraft's own channel: what a robot hold injected or held back (docs/debugging-robots.md).
+     * One channel for the whole log; each message names its connection. Its id is taken from the top
+     * of the id space like {@link SpyLogWriter#addChannel}'s, so wire channels keep their ids.
+     */
+    static final String TOPIC_HOLD = "/stagecraft/hold";
+    static final String HOLD_ENCODING = "x-stagecraft-hold";
+    static final String SCHEMA_HOLD_NAME = "stagecraft.Hold";
+
+    /** conn u32, port u32, action u8, program offset u64, upstream offset u64, text length u16 (all LE) */
+    static final int HOLD_PREFIX = 4 + 4 + 1 + 8 + 8 + 2;
+
     /** offset u64, kind u8, reason length u16 */
     static final int WIRE_PREFIX = 8 + 1 + 2;
 

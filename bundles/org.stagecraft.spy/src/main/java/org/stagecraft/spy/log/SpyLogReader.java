@@ -39,6 +39,10 @@ public final class SpyLogReader implements AutoCloseable {
 
     private record ChannelInfo(int id, String topic, String encoding, boolean events, int conn, int port,
             Direction dir, Map<String, String> metadata) {
+        /** Stagecraft's own robot-hold channel (not a wire channel, not in {@link SpyLogReader#entries()}). */
+        boolean hold() {
+            return Layout.HOLD_ENCODING.equals(encoding) && Layout.TOPIC_HOLD.equals(topic);
+        }
     }
 
     /** A chunk of the file; {@code channels} is null when the file does not say. */
@@ -406,6 +410,11 @@ public final class SpyLogReader implements AutoCloseable {
 
     /** Every entry of one chunk, in file order. */
     private List<LogEntry> readChunk(ChunkRef c) throws IOException {
+        return readChunk(c, null);
+    }
+
+    /** The same, and the chunk's robot-hold entries into {@code holds} when it is not null. */
+    private List<LogEntry> readChunk(ChunkRef c, List<HoldEntry> holds) throws IOException {
         if (c.length() < Mcap.RECORD_PREFIX || c.length() > MAX_RECORD) {
             throw new SpyLogFormatException("chunk length out of range");
         }
@@ -433,6 +442,9 @@ public final class SpyLogReader implements AutoCloseable {
                 if (info == null) {
                     throw new SpyLogFormatException("message on an undefined channel " + ch);
                 }
+                if (holds != null && info.hold()) {
+                    holds.add(holdEntry(t, r));
+                }
                 LogEntry e = entry(info, t, r);
                 if (e != null) {
                     out.add(e);
@@ -440,6 +452,21 @@ public final class SpyLogReader implements AutoCloseable {
             }
         });
         return out;
+    }
+
+    private static HoldEntry holdEntry(long t, Mcap.In r) throws SpyLogFormatException {
+        int conn = (int) r.u32();
+        int port = (int) r.u32();
+        int action = r.u8();
+        HoldEntry.Action[] all = HoldEntry.Action.values();
+        if (action < 1 || action > all.length) {
+            throw new SpyLogFormatException("unknown hold action " + action);
+        }
+        long programOffset = r.u64();
+        long upstreamOffset = r.u64();
+        String text = new String(r.bytes(r.u16()), java.nio.charset.StandardCharsets.UTF_8);
+        byte[] bytes = r.bytes(r.remaining());
+        return new HoldEntry(t, conn, port, all[action - 1], programOffset, upstreamOffset, bytes, text);
     }
 
     private static LogEntry entry(ChannelInfo c, long t, Mcap.In r) throws SpyLogFormatException {
@@ -643,6 +670,80 @@ public final class SpyLogReader implements AutoCloseable {
             out.write(w.bytesUnsafe(), 0, w.length());
             expected += w.length();
         }
+        return out.toByteArray();
+    }
+
+    /**
+     * What robot holds did (docs/debugging-robots.md), in the order the spy did it: injections, held-back
+     * commands, hold on/off. Empty for a log of a session without holds. These entries are not among
+     * {@link #entries()}: that is the program's and Player's traffic exactly as they sent it.
+     */
+    public synchronized List<HoldEntry> holdEntries() throws IOException {
+        List<HoldEntry> out = new ArrayList<>();
+        Set<Integer> holdChannels = new HashSet<>();
+        for (ChannelInfo c : channels.values()) {
+            if (c.hold()) {
+                holdChannels.add(c.id());
+            }
+        }
+        if (holdChannels.isEmpty()) {
+            return out;
+        }
+        List<ChunkRef> inFileOrder = new ArrayList<>(chunks);
+        inFileOrder.sort(Comparator.comparingLong(ChunkRef::offset));
+        for (ChunkRef c : inFileOrder) {
+            if (c.channels() == null || !Collections.disjoint(c.channels(), holdChannels)) {
+                readChunk(c, out);
+            }
+        }
+        return out;
+    }
+
+    /** What the robot program sent on a connection, every byte, including those a hold kept from Player. */
+    public byte[] programBytes(int conn) throws IOException {
+        return streamBytes(conn, Direction.CLIENT_TO_SERVER);
+    }
+
+    /**
+     * What Player received on a connection: the program's bytes without those a hold kept back, with
+     * the bytes Stagecraft injected, in order. Without holds this is {@link #programBytes}.
+     *
+     * @throws SpyLogFormatException if the hold entries do not fit the program's stream (a damaged log)
+     */
+    public byte[] upstreamBytes(int conn) throws IOException {
+        byte[] program = programBytes(conn);
+        List<HoldEntry> mine = new ArrayList<>();
+        for (HoldEntry e : holdEntries()) {
+            if (e.conn() == conn && (e.action() == HoldEntry.Action.INJECTED || e.action() == HoldEntry.Action.HELD_BACK)) {
+                mine.add(e);
+            }
+        }
+        mine.sort(Comparator.comparingLong(HoldEntry::programOffset)); // stable: injections at one offset keep their order
+        ByteArrayOutputStream out = new ByteArrayOutputStream(program.length);
+        int pos = 0;
+        for (HoldEntry e : mine) {
+            if (e.programOffset() < pos || e.programOffset() > program.length) {
+                throw new SpyLogFormatException(path + ": connection " + conn + ": hold entry at program offset "
+                        + e.programOffset() + " does not fit the program's stream (at " + pos + " of " + program.length + ")");
+            }
+            out.write(program, pos, (int) e.programOffset() - pos);
+            pos = (int) e.programOffset();
+            if (out.size() != e.upstreamOffset()) {
+                throw new SpyLogFormatException(path + ": connection " + conn + ": " + e.action() + " at upstream offset "
+                        + e.upstreamOffset() + ", but the rebuilt stream is at " + out.size());
+            }
+            if (e.action() == HoldEntry.Action.INJECTED) {
+                out.write(e.bytesUnsafe(), 0, e.length());
+            } else {
+                if (pos + e.length() > program.length
+                        || !Arrays.equals(program, pos, pos + e.length(), e.bytesUnsafe(), 0, e.length())) {
+                    throw new SpyLogFormatException(path + ": connection " + conn + ": held-back bytes at program offset "
+                            + pos + " are not the program's bytes there");
+                }
+                pos += e.length();
+            }
+        }
+        out.write(program, pos, program.length - pos);
         return out.toByteArray();
     }
 

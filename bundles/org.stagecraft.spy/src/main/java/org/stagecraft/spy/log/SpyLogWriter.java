@@ -71,6 +71,8 @@ public final class SpyLogWriter implements AutoCloseable {
     private final Map<Integer, SchemaDef> extraSchemas = new TreeMap<>();
     private final java.util.Set<Integer> extraSchemaWritten = new java.util.HashSet<>();
     private int nextExtraChannel = -1;
+    /** Stagecraft's hold channel ({@link #hold}), or -1 until the first hold entry. */
+    private int holdChannel = -1;
     /** The ids {@link #addChannel} handed out: the only channels {@link #message} writes to. */
     private final java.util.Set<Integer> addedChannels = new java.util.HashSet<>();
     private final java.util.Set<Integer> channelWritten = new java.util.HashSet<>();
@@ -252,6 +254,27 @@ public final class SpyLogWriter implements AutoCloseable {
         }
         int at = beginMessage(channel, timeNanos);
         chunk.bytes(data);
+        endMessage(at);
+    }
+
+    /**
+     * Records what a robot hold did: bytes Stagecraft injected towards Player, program bytes it held
+     * back, or the hold switching on or off. Goes to Stagecraft's own channel ({@code /stagecraft/hold}),
+     * created at the first call, so a log of a session without holds is what it always was.
+     */
+    public synchronized void hold(HoldEntry e) throws IOException {
+        check();
+        if (holdChannel < 0) {
+            holdChannel = addChannel(Layout.TOPIC_HOLD, Layout.HOLD_ENCODING, Layout.SCHEMA_HOLD_NAME, "", new byte[0],
+                    Map.of("stagecraft", "hold"));
+        }
+        byte[] text = Layout.utf8(e.text());
+        if (text.length > 0xffff) {
+            text = Arrays.copyOf(text, 0xffff);
+        }
+        int at = beginMessage(holdChannel, e.timeNanos());
+        chunk.u32(e.conn()).u32(e.port()).u8(e.action().ordinal() + 1).u64(e.programOffset()).u64(e.upstreamOffset())
+                .u16(text.length).bytes(text).bytes(e.bytesUnsafe());
         endMessage(at);
     }
 

@@ -4,6 +4,7 @@ import java.io.IOException;
 
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.SpyLogWriter;
 
 /** Records what the spy observes into an MCAP spy log. */
@@ -37,6 +38,11 @@ public final class LogRecorder implements SpyRecorder {
     public void diagnostic(ConnectionInfo c, Direction dir, long streamOffset, String text, long timeNanos)
             throws IOException {
         writer.diagnostic(timeNanos, c.id(), dir, streamOffset, text);
+    }
+
+    @Override
+    public void hold(HoldEntry entry) throws IOException {
+        writer.hold(entry);
     }
 
     @Override

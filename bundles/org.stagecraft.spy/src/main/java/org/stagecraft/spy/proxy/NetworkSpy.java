@@ -21,6 +21,11 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
 
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.spy.hold.HoldAction;
+import org.stagecraft.spy.hold.HoldObserver;
+import org.stagecraft.spy.hold.HoldState;
+import org.stagecraft.spy.hold.HoldingForwarder;
+import org.stagecraft.spy.hold.RobotHold;
 
 /**
  * The Network Spy's relay: a transparent TCP proxy between robot programs and Player. For each
@@ -68,6 +73,7 @@ public final class NetworkSpy implements AutoCloseable {
     private final LongAdder connectionsTotal = new LongAdder();
     private final LongAdder observerFailures = new LongAdder();
     private volatile boolean closed;
+    private final RobotHold holds;
 
     public NetworkSpy(List<Route> routes, WireObserver observer) {
         if (routes.isEmpty()) {
@@ -75,6 +81,25 @@ public final class NetworkSpy implements AutoCloseable {
         }
         this.routes = List.copyOf(routes);
         this.observer = observer;
+        this.holds = new RobotHold(new HoldObserver() {
+            @Override
+            public void action(HoldAction a) {
+                observe(() -> observer.holdAction(a, WallClock.nowNanos()));
+            }
+
+            @Override
+            public void state(HoldState s) {
+                observe(() -> observer.holdState(s, WallClock.nowNanos()));
+            }
+        });
+    }
+
+    /**
+     * The debugger-safe robot: hold and release the robots, enable holds, the watchdog
+     * (docs/debugging-robots.md). Holds are off unless enabled; then the relay is the plain byte copy.
+     */
+    public RobotHold holds() {
+        return holds;
     }
 
     /**
@@ -190,6 +215,7 @@ public final class NetworkSpy implements AutoCloseable {
         for (Relay r : relays) {
             r.abort("spy stopped");
         }
+        holds.close();
     }
 
     private void acceptLoop(ServerSocket server, Route route) {
@@ -217,6 +243,8 @@ public final class NetworkSpy implements AutoCloseable {
         final Route route;
         final ConnectionInfo info;
         final AtomicInteger running = new AtomicInteger(2);
+        /** The message-aware program-to-Player path when holds were enabled at accept; else null. */
+        volatile HoldingForwarder holding;
         volatile String closeReason;
 
         Relay(Socket client, Route route) {
@@ -238,6 +266,11 @@ public final class NetworkSpy implements AutoCloseable {
                 closeQuietly(upstream);
                 finish("upstream " + info.upstream() + " refused: " + refused);
                 return;
+            }
+            try {
+                holding = holds.attach(info, upstream.getOutputStream());
+            } catch (IOException e) {
+                holding = null; // the upstream is already gone: the pumps see it and end the connection
             }
             startThread("spy-s2c-" + info.id(), () -> pump(upstream, client, Direction.SERVER_TO_CLIENT));
             pump(client, upstream, Direction.CLIENT_TO_SERVER);
@@ -310,19 +343,27 @@ public final class NetworkSpy implements AutoCloseable {
         void pump(Socket from, Socket to, Direction dir) {
             byte[] buf = new byte[BUFFER];
             LongAdder counter = dir == Direction.CLIENT_TO_SERVER ? bytesC2S : bytesS2C;
+            HoldingForwarder hold = dir == Direction.CLIENT_TO_SERVER ? holding : null;
             try {
                 InputStream in = from.getInputStream();
                 OutputStream out = to.getOutputStream();
                 while (true) {
                     int n = in.read(buf);
                     if (n < 0) {
+                        if (hold != null) {
+                            hold.end();
+                        }
                         // orderly end of this direction: pass the half-close on
                         if (!to.isClosed()) {
                             to.shutdownOutput();
                         }
                         break;
                     }
-                    out.write(buf, 0, n);
+                    if (hold != null) {
+                        hold.relay(buf, 0, n); // whole messages only may be held or injected
+                    } else {
+                        out.write(buf, 0, n);
+                    }
                     counter.add(n);
                     observe(() -> observer.chunk(info, dir, Arrays.copyOf(buf, n), WallClock.nowNanos()));
                 }
@@ -347,6 +388,7 @@ public final class NetworkSpy implements AutoCloseable {
 
         void finish(String reason) {
             relays.remove(this);
+            holds.detach(holding);
             observe(() -> observer.closed(info, WallClock.nowNanos(), reason));
         }
     }

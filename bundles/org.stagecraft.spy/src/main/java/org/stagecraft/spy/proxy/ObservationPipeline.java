@@ -17,6 +17,10 @@ import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.PlayerFramer;
 import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.spy.hold.HoldAction;
+import org.stagecraft.spy.hold.HoldState;
+import org.stagecraft.spy.hold.HoldStreams;
+import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamMessage;
 
@@ -48,6 +52,23 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
 
     private record Closed(ConnectionInfo connection, long t, String reason) implements Item {
     }
+
+    private record HoldDone(HoldAction action, long t) implements Item {
+        @Override
+        public ConnectionInfo connection() {
+            return action.connection();
+        }
+    }
+
+    /** The hold is the spy's, not a connection's: its connection() is the placeholder below. */
+    private record HoldChanged(HoldState state, long t) implements Item {
+        @Override
+        public ConnectionInfo connection() {
+            return SPY;
+        }
+    }
+
+    private static final ConnectionInfo SPY = new ConnectionInfo(0, 0, "", "", "");
 
     private record StreamRef(int conn, Direction dir) {
     }
@@ -114,6 +135,17 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     @Override
     public void closed(ConnectionInfo connection, long timeNanos, String reason) {
         queue.add(new Closed(connection, timeNanos, reason));
+    }
+
+    /** Never dropped like chunks: they are few and the log must rebuild what Player received. */
+    @Override
+    public void holdAction(HoldAction action, long timeNanos) {
+        queue.add(new HoldDone(action, timeNanos));
+    }
+
+    @Override
+    public void holdState(HoldState state, long timeNanos) {
+        queue.add(new HoldChanged(state, timeNanos));
     }
 
     // ---- status --------------------------------------------------------------------------------
@@ -235,6 +267,16 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                     }
                 }
                 record(r -> r.closed(cl.connection(), cl.t(), cl.reason()));
+            }
+            case HoldDone h -> {
+                record(r -> r.hold(h.action().toEntry(h.t())));
+                bus.publish(new StreamMessage(HoldStreams.actionKey(h.action()), h.t(), h.action()));
+            }
+            case HoldChanged h -> {
+                HoldState s = h.state();
+                record(r -> r.hold(new HoldEntry(h.t(), 0, 0, s.held() ? HoldEntry.Action.HOLD_ON : HoldEntry.Action.HOLD_OFF,
+                        0, 0, null, s.description())));
+                bus.publish(new StreamMessage(HoldStreams.STATE, h.t(), s));
             }
         }
     }

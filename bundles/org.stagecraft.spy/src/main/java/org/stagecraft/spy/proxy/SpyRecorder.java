@@ -4,6 +4,7 @@ import java.io.IOException;
 
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.spy.log.HoldEntry;
 
 /**
  * Where the spy records a session (the MCAP spy log). Called on the observation thread only. An
@@ -18,6 +19,10 @@ public interface SpyRecorder extends AutoCloseable {
 
     void diagnostic(ConnectionInfo connection, Direction dir, long streamOffset, String text, long timeNanos)
             throws IOException;
+
+    /** What a robot hold did or became (Stagecraft's own record, apart from the wire). */
+    default void hold(HoldEntry entry) throws IOException {
+    }
 
     /** Makes what was recorded so far durable (called about once a second). */
     void flush() throws IOException;

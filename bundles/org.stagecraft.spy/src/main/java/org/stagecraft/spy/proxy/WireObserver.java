@@ -1,6 +1,8 @@
 package org.stagecraft.spy.proxy;
 
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.spy.hold.HoldAction;
+import org.stagecraft.spy.hold.HoldState;
 
 /**
  * Sees what the spy forwards, after it has been forwarded. Called on the forwarding threads, so
@@ -20,6 +22,14 @@ public interface WireObserver {
      * spy's {@link SpyListener}s. Between {@link #opened} and {@link #closed}.
      */
     default void notice(SpyNotice notice, long timeNanos) {
+    }
+
+    /** A robot hold injected or held back a message (only when the user enabled holds). */
+    default void holdAction(HoldAction action, long timeNanos) {
+    }
+
+    /** The robot hold changed (enabled, held, reasons). */
+    default void holdState(HoldState state, long timeNanos) {
     }
 
     WireObserver NONE = new WireObserver() {

@@ -1,0 +1,41 @@
+package org.stagecraft.spy.hold;
+
+import org.stagecraft.player.wire.MessageHeader;
+import org.stagecraft.spy.log.HoldEntry;
+import org.stagecraft.spy.proxy.ConnectionInfo;
+
+/**
+ * One thing a hold did to a connection's program-to-Player stream: a whole Player message it
+ * injected (a zero-velocity command) or a whole message of the program's it held back. Published on
+ * the stream bus ({@link HoldStreams}) and logged ({@link HoldEntry}).
+ *
+ * @param kind           {@link HoldEntry.Action#INJECTED} or {@link HoldEntry.Action#HELD_BACK}
+ * @param programOffset  offset in the program's stream: injected before the program's byte there;
+ *                       held-back bytes start there
+ * @param upstreamOffset offset in the stream Player receives
+ * @param header         the message's header
+ * @param bytes          the exact message bytes (header and payload)
+ * @param text           for people, e.g. "zero velocity to position2d:0 (suspended in the debugger)"
+ */
+public record HoldAction(ConnectionInfo connection, HoldEntry.Action kind, long programOffset, long upstreamOffset,
+        MessageHeader header, byte[] bytes, String text) {
+
+    public HoldAction {
+        bytes = bytes.clone();
+    }
+
+    @Override
+    public byte[] bytes() {
+        return bytes.clone();
+    }
+
+    public int length() {
+        return bytes.length;
+    }
+
+    /** The log's record of it. */
+    public HoldEntry toEntry(long timeNanos) {
+        return new HoldEntry(timeNanos, connection.id(), connection.port(), kind, programOffset, upstreamOffset, bytes,
+                text);
+    }
+}

@@ -1,0 +1,48 @@
+package org.stagecraft.spy.hold;
+
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.player.wire.MessageHeader;
+import org.stagecraft.spy.proxy.ConnectionInfo;
+import org.stagecraft.spy.proxy.SpyStreams;
+import org.stagecraft.streams.StreamKey;
+import org.stagecraft.streams.StreamPattern;
+
+/**
+ * Where the spy publishes what its robot hold does, on the stream bus. The message types are at the
+ * top of the user-defined range (stream processors count up from 128).
+ *
+ * <ul>
+ * <li>{@link #STATE}: a {@link HoldState} every time the hold changes (enabled, held, reasons);
+ * subscribe latest-value for a status line.</li>
+ * <li>{@link #actionKey}: a {@link HoldAction} per injected or held-back message, keyed like the
+ * connection's client-to-server messages ({@link SpyStreams#key}) with type {@link #INJECTED_TYPE} or
+ * {@link #HELD_BACK_TYPE} and the message's device and subtype.</li>
+ * </ul>
+ */
+public final class HoldStreams {
+    public static final int STATE_TYPE = 253;
+    public static final int INJECTED_TYPE = 254;
+    public static final int HELD_BACK_TYPE = 255;
+
+    /** The hold's state stream (one per bus: one spy per session). */
+    public static final StreamKey STATE = new StreamKey("stagecraft", "robot-hold", STATE_TYPE, 0, 0, 0);
+
+    private HoldStreams() {
+    }
+
+    public static StreamKey actionKey(HoldAction a) {
+        MessageHeader h = a.header();
+        int type = a.kind() == org.stagecraft.spy.log.HoldEntry.Action.INJECTED ? INJECTED_TYPE : HELD_BACK_TYPE;
+        return SpyStreams.key(a.connection(), Direction.CLIENT_TO_SERVER, type, h.interf(), h.index(), h.subtype());
+    }
+
+    /** Every zero command the holds injected, on every connection. */
+    public static StreamPattern injected() {
+        return StreamPattern.any().messageType(INJECTED_TYPE);
+    }
+
+    /** Every program message the holds kept from Player, on every connection. */
+    public static StreamPattern heldBack() {
+        return StreamPattern.any().messageType(HELD_BACK_TYPE);
+    }
+}
