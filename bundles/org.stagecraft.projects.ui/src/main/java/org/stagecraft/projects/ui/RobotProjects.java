@@ -97,13 +97,13 @@ public final class RobotProjects {
      */
     public static Created create(Spec spec, IProgressMonitor monitor) throws CoreException {
         IWorkspace ws = ResourcesPlugin.getWorkspace();
+        IStatus nameOk = ws.validateName(spec.name(), IResource.PROJECT);
+        if (!nameOk.isOK()) {
+            throw error("cannot name a project '" + spec.name() + "': " + nameOk.getMessage());
+        }
         IProject project = ws.getRoot().getProject(spec.name());
         if (project.exists()) {
             throw error("a project named " + spec.name() + " exists already");
-        }
-        IStatus nameOk = ws.validateName(spec.name(), IResource.PROJECT);
-        if (!nameOk.isOK()) {
-            throw new CoreException(nameOk);
         }
         List<RobotProjectLayout.ProjectFile> files;
         try {

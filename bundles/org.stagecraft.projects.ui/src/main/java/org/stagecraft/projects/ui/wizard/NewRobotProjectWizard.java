@@ -28,6 +28,8 @@ public final class NewRobotProjectWizard extends Wizard implements INewWizard {
     private IWorkbench workbench;
     private RobotProjectPage page;
     private RobotProjects.Created created;
+    private String presetName;
+    private ProgramTemplate presetTemplate;
 
     public NewRobotProjectWizard() {
         setWindowTitle("New Robot Project");
@@ -42,6 +44,12 @@ public final class NewRobotProjectWizard extends Wizard implements INewWizard {
     @Override
     public void addPages() {
         page = new RobotProjectPage();
+        if (presetName != null) {
+            page.setInitialProjectName(presetName);
+        }
+        if (presetTemplate != null) {
+            page.setTemplate(presetTemplate);
+        }
         addPage(page);
     }
 
@@ -108,9 +116,9 @@ public final class NewRobotProjectWizard extends Wizard implements INewWizard {
         }
     }
 
-    /** For tests and callers that know the template before the page shows. */
+    /** The name and template the page starts with; call before the wizard's dialog is created. */
     public void preset(String projectName, ProgramTemplate template) {
-        page.setInitialProjectName(projectName);
-        page.setTemplate(template);
+        presetName = projectName;
+        presetTemplate = template;
     }
 }
