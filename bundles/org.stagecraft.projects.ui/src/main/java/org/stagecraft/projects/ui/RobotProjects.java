@@ -137,7 +137,9 @@ public final class RobotProjects {
      * else the project folder) and Stagecraft's Python client folder as an external library, so
      * PyDev's code analysis and completion resolve {@code from stagecraft_player import ...}; then
      * the PyDev nature is added. Calling it again is harmless and updates the client folder after
-     * the IDE moved it (an update). Without PyDev installed nothing changes.
+     * the IDE moved it (an update). Without PyDev installed nothing changes. Runs as a workspace
+     * operation on the project: call it from any thread that holds no scheduling rule, or one that
+     * contains the project.
      *
      * @return whether the project is now a PyDev project (false: PyDev is not installed)
      * @throws CoreException if the project is not open, its {@code .pydevproject} cannot be read, or

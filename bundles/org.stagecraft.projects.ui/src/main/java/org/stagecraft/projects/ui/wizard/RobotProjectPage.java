@@ -3,6 +3,7 @@ package org.stagecraft.projects.ui.wizard;
 import java.util.EnumMap;
 import java.util.Map;
 
+import org.eclipse.jface.dialogs.Dialog;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
@@ -58,6 +59,7 @@ public final class RobotProjectPage extends WizardNewProjectCreationPage {
         GridData gd = new GridData(SWT.FILL, SWT.TOP, true, false);
         gd.widthHint = 400;
         world.setLayoutData(gd);
+        Dialog.applyDialogFont(top);
     }
 
     public ProgramTemplate template() {
