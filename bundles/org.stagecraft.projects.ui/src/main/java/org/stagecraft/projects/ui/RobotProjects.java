@@ -123,7 +123,7 @@ public final class RobotProjects {
             if (pyDevInstalled()) {
                 configurePyDev(project, sub.split(2));
             }
-        }, ws.getRuleFactory().createRule(project), IWorkspace.AVOID_UPDATE, monitor);
+        }, ws.getRoot(), IWorkspace.AVOID_UPDATE, monitor); // the root: configurePyDev adds a nature inside
         IFile program = project.getFile(RobotProjectLayout.programPath(spec.program()));
         IFile windowed = project.getFile(RobotProjectLayout.WINDOWED_CFG);
         IFile headless = project.getFile(RobotProjectLayout.HEADLESS_CFG);
@@ -138,8 +138,8 @@ public final class RobotProjects {
      * PyDev's code analysis and completion resolve {@code from stagecraft_player import ...}; then
      * the PyDev nature is added. Calling it again is harmless and updates the client folder after
      * the IDE moved it (an update). Without PyDev installed nothing changes. Runs as a workspace
-     * operation on the project: call it from any thread that holds no scheduling rule, or one that
-     * contains the project.
+     * operation with the workspace root's rule (adding a nature needs it): call it from a thread that
+     * holds no scheduling rule, or the root's.
      *
      * @return whether the project is now a PyDev project (false: PyDev is not installed)
      * @throws CoreException if the project is not open, its {@code .pydevproject} cannot be read, or
@@ -168,7 +168,7 @@ public final class RobotProjects {
                 d.setNatureIds(natures.toArray(String[]::new));
                 project.setDescription(d, sub.split(1));
             }
-        }, project, IWorkspace.AVOID_UPDATE, monitor);
+        }, ws.getRoot(), IWorkspace.AVOID_UPDATE, monitor); // a change of natures takes the workspace root's rule
         return true;
     }
 

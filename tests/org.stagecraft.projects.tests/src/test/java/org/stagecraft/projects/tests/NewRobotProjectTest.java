@@ -3,9 +3,9 @@ package org.stagecraft.projects.tests;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
 
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -41,10 +41,12 @@ class NewRobotProjectTest {
         Projects.clean();
     }
 
+    /** The normal run has no PyDev; the build's "pydev" profile runs these tests again with it. */
     @Test
-    void testRuntimeHasNoPyDev() {
-        assertNull(Platform.getBundle("org.python.pydev"), "these tests are about the plain project: PyDev must not be installed");
-        assertFalse(RobotProjects.pyDevInstalled());
+    void pyDevIsThereOnlyWhenTheRunSaysSo() {
+        boolean expected = Boolean.getBoolean("stagecraft.test.pydev");
+        assertEquals(expected, Platform.getBundle("org.python.pydev") != null, "PyDev in the test runtime");
+        assertEquals(expected, RobotProjects.pyDevInstalled());
     }
 
     @ParameterizedTest
@@ -75,6 +77,7 @@ class NewRobotProjectTest {
 
     @Test
     void plainProjectWithoutPyDev() throws Exception {
+        assumeFalse(RobotProjects.pyDevInstalled(), "PyDev is installed: PyDevRobotProjectTest covers this run");
         IProject p = RobotProjects.create(new RobotProjects.Spec("Plain", null, ProgramTemplate.LASER_SENTINEL), null).project();
         assertEquals(List.of(), List.of(p.getDescription().getNatureIds()), "no natures without PyDev");
         assertFalse(p.getFile(PyDevProjectFile.FILE_NAME).exists(), ".pydevproject only with PyDev");
@@ -134,7 +137,10 @@ class NewRobotProjectTest {
     /** What configurePyDev writes before it adds PyDev's nature: testable without PyDev. */
     @Test
     void pyDevSettingsNameSourceFolderAndTheClientWhereStagecraftPlayerIs() throws Exception {
-        IProject p = RobotProjects.create(new RobotProjects.Spec("Analysed", null, ProgramTemplate.LASER_SENTINEL), null).project();
+        IProject p = ResourcesPlugin.getWorkspace().getRoot().getProject("Analysed");
+        p.create(null);
+        p.open(null);
+        p.getFolder("src").create(true, true, null);
         String client = PythonClientPath.folder().orElseThrow(() -> new AssertionError("org.stagecraft.python is in the test runtime"));
         IFile file = RobotProjects.writePyDevSettings(p, client, null);
         assertEquals(p.getFile(".pydevproject"), file);
