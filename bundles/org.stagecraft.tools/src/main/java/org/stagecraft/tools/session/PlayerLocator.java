@@ -29,21 +29,7 @@ public final class PlayerLocator {
 
     /** Where the Player program came from. */
     public enum Source {
-        LAUNCH_CONFIGURATION("the launch configuration"),
-        PREFERENCE("the Player program preference"),
-        INSTALL_PREFIX("the Stagecraft Player/Stage install"),
-        PATH("the PATH");
-
-        private final String text;
-
-        Source(String text) {
-            this.text = text;
-        }
-
-        @Override
-        public String toString() {
-            return text;
-        }
+        LAUNCH_CONFIGURATION, PREFERENCE, INSTALL_PREFIX, PATH
     }
 
     /**
@@ -56,11 +42,6 @@ public final class PlayerLocator {
     public record Located(String program, Source source, Path prefix, Map<String, String> environment) {
         public Located {
             environment = Map.copyOf(environment);
-        }
-
-        /** For a console: "player /home/me/.local/share/stagecraft/player-stage/bin/player (from ...)". */
-        public String describe() {
-            return "Player " + program + " (from " + source + ")";
         }
     }
 
