@@ -16,7 +16,7 @@ import com.pty4j.PtyProcessBuilder;
  * only show once the buffer fills, and the last lines of a crash would be lost; on a terminal it
  * writes each line. Standard error gets a terminal of its own (pty4j's console mode), so the two
  * streams stay apart. A process on a terminal is also the leader of a session and process group of
- * its own, which is what the {@link Reaper} kills when the IDE dies.
+ * its own, which is what the {@link OrphanReaper} kills when the IDE dies.
  */
 public final class ProcessStarter {
     /** Set to false ({@code -Dstagecraft.tools.pty=false}) to run tools on pipes. */

@@ -208,6 +208,11 @@ public final class SupervisedTool {
             output(Stream.SUPERVISOR, started.note());
         }
         output(Stream.SUPERVISOR, "started " + String.join(" ", spec.command()) + " (pid " + p.pid() + ")");
+        // if the IDE dies without stopping it (killed, crashed), the reaper takes the tool's tree down
+        String unprotected = OrphanReaper.shared().register(p.pid());
+        if (unprotected != null) {
+            output(Stream.SUPERVISOR, unprotected);
+        }
         if (started.onTerminal()) {
             output(Stream.SUPERVISOR, "output through a pseudo-terminal (each line as it is written)");
         }
@@ -275,6 +280,8 @@ public final class SupervisedTool {
                 // not interrupted by anyone but the JVM going down; keep waiting
             }
         }
+        // at once: from now on the pid may be reused by a process that is none of ours
+        OrphanReaper.shared().unregister(run.process.pid());
         // Let the readers pass on the last lines before the exit is reported.
         for (Thread t : run.readers) {
             try {

@@ -42,8 +42,6 @@ public final class SessionParts implements ToolListener {
     private boolean stopping;
     /** Why the session failed (Player gone for good), or null. */
     private volatile String failure;
-    /** Stops the session if the IDE exits while it runs (else Player would outlive the IDE and keep its ports). */
-    private Thread exitHook;
     /** The session's bus republished on the workbench bus, where the Robot Views listen. */
     private volatile Subscription toWorkbench;
 
@@ -69,8 +67,8 @@ public final class SessionParts implements ToolListener {
     public void started(RobotSession s) {
         this.session = s;
         toWorkbench = WorkbenchBus.forward(s.bus());
-        exitHook = new Thread(s::close, "stagecraft-session-exit-" + sessionName);
-        Runtime.getRuntime().addShutdownHook(exitHook);
+        // stopped when this plug-in stops at the latest (else Player would outlive the IDE and keep its ports)
+        RunningSessions.add(this);
         SessionPartProcess p;
         synchronized (this) {
             p = new SessionPartProcess(SPY_PART, "stagecraft.spy", launch, control(null));
@@ -225,11 +223,7 @@ public final class SessionParts implements ToolListener {
             if (forwarding != null) {
                 forwarding.close();
             }
-            try {
-                Runtime.getRuntime().removeShutdownHook(exitHook);
-            } catch (IllegalStateException e) {
-                // the JVM is exiting: the hook is running or has run
-            }
+            RunningSessions.remove(this);
             if (spy != null) {
                 spy.stdout("stopped: " + s.spy().totalConnections() + " connections, " + s.pipeline().messages()
                         + " messages, " + (s.spy().bytesForwarded(Direction.CLIENT_TO_SERVER)

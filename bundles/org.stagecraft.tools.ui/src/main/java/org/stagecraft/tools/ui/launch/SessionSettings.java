@@ -19,6 +19,7 @@ import org.eclipse.core.runtime.Status;
 import org.eclipse.debug.core.ILaunchConfiguration;
 import org.stagecraft.tools.process.RestartPolicy;
 import org.stagecraft.tools.process.ToolSpec;
+import org.stagecraft.tools.session.PlayerLocator;
 import org.stagecraft.tools.session.SessionConfig;
 import org.stagecraft.tools.types.ToolDefinition;
 import org.stagecraft.tools.ui.prefs.ToolPreferences;
@@ -59,10 +60,9 @@ record SessionSettings(SessionConfig config, IFile cfgFile, IFile program, IProj
         }
         IProject project = cfgFile != null ? cfgFile.getProject() : program != null ? program.getProject() : null;
 
-        String player = c.getAttribute(LaunchAttributes.PLAYER, "").trim();
-        if (player.isEmpty()) {
-            player = ToolPreferences.get(ToolPreferences.PLAYER);
-        }
+        // launch configuration, preference (its default "player" counts as unset), install prefix, PATH
+        PlayerLocator.Located player = PlayerLocator.fromSystem().locate(c.getAttribute(LaunchAttributes.PLAYER, ""),
+                ToolPreferences.get(ToolPreferences.PLAYER), c.getAttribute(LaunchAttributes.PLAYER_ENVIRONMENT, Map.of()));
         RestartPolicy restart;
         try {
             restart = RestartPolicy.parse(c.getAttribute(LaunchAttributes.PLAYER_RESTART, "never"));
@@ -71,7 +71,6 @@ record SessionSettings(SessionConfig config, IFile cfgFile, IFile program, IProj
         }
         int port = c.getAttribute(LaunchAttributes.DEFAULT_PORT, SessionConfig.PLAYER_DEFAULT_PORT);
         int seconds = c.getAttribute(LaunchAttributes.READY_SECONDS, 30);
-        Map<String, String> playerEnv = c.getAttribute(LaunchAttributes.PLAYER_ENVIRONMENT, Map.of());
 
         IContainer logFolder = null;
         Path log = null;
@@ -89,7 +88,7 @@ record SessionSettings(SessionConfig config, IFile cfgFile, IFile program, IProj
         List<ToolSpec> tools = tools(c.getAttribute(LaunchAttributes.TOOLS, (List<String>) null));
         SessionConfig config;
         try {
-            config = SessionConfig.of(cfg).withPlayer(List.of(player), playerEnv).withDefaultPort(port)
+            config = SessionConfig.of(cfg).withPlayer(List.of(player.program()), player.environment()).withDefaultPort(port)
                     .withPlayerRestart(restart, Duration.ofSeconds(seconds)).withTools(tools).withLog(log);
         } catch (IllegalArgumentException e) {
             throw error(e.getMessage());
