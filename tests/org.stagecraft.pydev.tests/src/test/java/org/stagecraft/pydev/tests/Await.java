@@ -15,7 +15,7 @@ final class Await {
         long deadline = System.nanoTime() + timeout.toNanos();
         while (!condition.getAsBoolean()) {
             if (System.nanoTime() > deadline) {
-                throw new AssertionError("timed out after " + timeout + " waiting until " + what + " " + state.get());
+                throw new AssertionError("timed out after " + timeout + " waiting until " + what + " " + state.get() + Threads.dump());
             }
             LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(20));
         }

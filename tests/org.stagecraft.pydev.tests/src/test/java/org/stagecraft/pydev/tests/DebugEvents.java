@@ -36,7 +36,7 @@ final class DebugEvents implements IDebugEventSetListener, AutoCloseable {
             }
             long left = deadline - System.nanoTime();
             if (left <= 0) {
-                throw new AssertionError("timed out after " + timeout + " waiting for " + what + "; events seen: " + seen);
+                throw new AssertionError("timed out after " + timeout + " waiting for " + what + "; events seen: " + seen + Threads.dump());
             }
             TimeUnit.NANOSECONDS.timedWait(this, left);
         }
