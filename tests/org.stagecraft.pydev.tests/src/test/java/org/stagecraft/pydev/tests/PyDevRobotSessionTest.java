@@ -294,6 +294,30 @@ class PyDevRobotSessionTest {
         }
     }
 
+    @Test
+    void terminatingTheSessionWhileItsProgramIsSuspendedEndsAllOfIt() throws Exception {
+        int port = Ports.free("127.0.0.1", 1).get(0);
+        IFile robot = write(project, "robot.py", """
+                x = 1
+                y = x + 1
+                print(y)
+                """);
+        breakpointAsPyDevsRulerMakesIt(robot, 2);
+        try (DebugEvents events = new DebugEvents()) {
+            ILaunch launch = launch(config(port, robot, Map.of()), ILaunchManager.DEBUG_MODE);
+            IProcess program = programOf(launch);
+            events.await("a thread suspended at the breakpoint", WAIT,
+                    e -> e.getKind() == DebugEvent.SUSPEND && e.getDetail() == DebugEvent.BREAKPOINT && e.getSource() instanceof IThread);
+            ProcessHandle player = RobotSessionLaunchDelegate.partsOf(launch).session().player().process();
+            launch.terminate();
+            events.await("the program to end", WAIT, e -> e.getSource() == program && e.getKind() == DebugEvent.TERMINATE);
+            Await.until("the whole session to end", WAIT, launch::isTerminated, () -> Arrays.stream(launch.getProcesses())
+                    .map(p -> p.getLabel() + " terminated=" + p.isTerminated()).toList() + " targets "
+                    + Arrays.stream(launch.getDebugTargets()).map(t -> t + " terminated=" + t.isTerminated()).toList());
+            Await.until("Player to be gone", WAIT, () -> !player.isAlive(), () -> "");
+        }
+    }
+
     // ------------------------------------------------------------------------------------------
 
     /** A line breakpoint set the way PyDev's editor ruler sets one (PyDev's own code), in PyDev's editor. */

@@ -102,7 +102,7 @@ public final class RobotSessionShortcut implements ILaunchShortcut {
             if (r instanceof IFile f && "cfg".equals(f.getFileExtension())) {
                 out.add(f);
             }
-            return r == in || (deep && !r.isDerived() && !r.getName().startsWith("."));
+            return r.equals(in) || (deep && !r.isDerived() && !r.getName().startsWith("."));
         }, IResource.DEPTH_INFINITE, false);
         return out;
     }
