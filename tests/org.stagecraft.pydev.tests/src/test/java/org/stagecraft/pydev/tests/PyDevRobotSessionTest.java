@@ -218,7 +218,8 @@ class PyDevRobotSessionTest {
             events.await("the program's process to end with the session", WAIT,
                     e -> e.getSource() == program && e.getKind() == DebugEvent.TERMINATE);
         }
-        assertTrue(launch.isTerminated());
+        Await.until("the whole session to end (Player and the spy stop in the background)", WAIT, launch::isTerminated,
+                () -> Arrays.stream(launch.getProcesses()).map(p -> p.getLabel() + " terminated=" + p.isTerminated()).toList().toString());
         Await.until("the program's OS process " + pid + " to be gone", WAIT,
                 () -> ProcessHandle.of(pid).map(h -> !h.isAlive()).orElse(true), () -> "");
     }
