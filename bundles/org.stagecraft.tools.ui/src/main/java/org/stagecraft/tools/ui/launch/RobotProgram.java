@@ -50,6 +50,7 @@ final class RobotProgram {
         ILaunchManager lm = DebugPlugin.getDefault().getLaunchManager();
         ILaunchConfigurationType pydev = lm.getLaunchConfigurationType(LaunchAttributes.PYDEV_RUN_TYPE);
         if (pydev != null) {
+            int partsBefore = launch.getProcesses().length;
             try {
                 if (program.getProject().hasNature(LaunchAttributes.PYDEV_NATURE)) {
                     startWithPyDev(pydev, config, mode, launch, program, lm, monitor);
@@ -59,8 +60,9 @@ final class RobotProgram {
                         + LaunchAttributes.PYDEV_NATURE + " nature): " + program.getName()
                         + " runs with the plain interpreter instead"));
             } catch (CoreException e) {
-                if (launch.isTerminated()) {
-                    // PyDev gave up on the launch itself (and said why): the session ends with it
+                if (launch.isTerminated() || launch.getProcesses().length > partsBefore) {
+                    // PyDev gave up on the launch itself (and said why), or failed after starting the
+                    // program (e.g. pydevd did not connect): no second start with the plain interpreter
                     throw e;
                 }
                 SessionParts.log(Status.warning("PyDev could not launch " + program.getFullPath()
