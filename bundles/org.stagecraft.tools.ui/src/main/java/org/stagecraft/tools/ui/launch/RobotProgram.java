@@ -102,7 +102,12 @@ final class RobotProgram {
             throw new CoreException(Status.error("PyDev has no launcher for mode " + mode));
         }
         int before = launch.getProcesses().length;
-        delegates[0].getDelegate().launch(wc, mode, launch, monitor);
+        try {
+            delegates[0].getDelegate().launch(wc, mode, launch, monitor);
+        } catch (RuntimeException e) {
+            // the session must still be stopped (it is, for a CoreException)
+            throw new CoreException(Status.error("PyDev failed to launch " + program.getFullPath() + ": " + e, e));
+        }
         if (launch.getProcesses().length == before) {
             throw new CoreException(Status.error("PyDev did not start " + program.getFullPath()
                     + " (see its message and the Error Log)"));
