@@ -93,6 +93,27 @@ ROOTS = [
     # debug / launching
     (P, "org.eclipse.debug.core"),
     (P, "org.eclipse.debug.ui"),
+    # what PyDev needs beyond the above (users install it from its update site; the PyDev test tier
+    # installs it from the archived update site in ../shared/third-party)
+    (P, "org.eclipse.search"),
+    # p2 UI: Help > Install New Software / Installation Details / Available Software Sites, and the
+    # director, engine, touchpoints and transport behind them (no features on Central: bundles)
+    (P, "org.eclipse.equinox.p2.ui"),
+    (P, "org.eclipse.equinox.p2.ui.sdk"),
+    (P, "org.eclipse.equinox.p2.operations"),
+    (P, "org.eclipse.equinox.p2.director"),
+    (P, "org.eclipse.equinox.p2.engine"),
+    (P, "org.eclipse.equinox.p2.garbagecollector"),
+    (P, "org.eclipse.equinox.p2.touchpoint.eclipse"),
+    (P, "org.eclipse.equinox.p2.touchpoint.natives"),
+    (P, "org.eclipse.equinox.p2.transport.ecf"),
+    (P, "org.eclipse.equinox.p2.updatechecker"),
+    (P, "org.eclipse.equinox.simpleconfigurator.manipulator"),
+    (P, "org.eclipse.equinox.frameworkadmin.equinox"),
+    (P, "org.eclipse.osgi.compatibility.state"),
+    # ECF file transfer for p2's transport (its POM leaves out what ECF needs; ECF's own URLConnection provider does http(s))
+    ("org.eclipse.ecf", "org.eclipse.ecf.identity"),
+    (P, "org.eclipse.equinox.concurrent"),
     # e4 runtime
     (P, "org.eclipse.e4.core.di"),
     (P, "org.eclipse.e4.core.di.extensions"),

@@ -1,6 +1,13 @@
 package org.stagecraft.tools.tests;
 
+import org.eclipse.core.expressions.EvaluationContext;
+import org.eclipse.core.expressions.EvaluationResult;
+import org.eclipse.core.expressions.Expression;
+import org.eclipse.core.expressions.ExpressionConverter;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.core.runtime.IConfigurationElement;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -93,5 +100,44 @@ class ToolTypesPreferencesAndShortcutTest {
         } finally {
             p.delete(true, true, new NullProgressMonitor());
         }
+    }
+
+    @Test
+    void runAsRobotSessionAlsoOnTheProgramFindingItsCfgBesideItOrInTheProject() throws Exception {
+        IProject p = Fixtures.projectWithWorlds("shortcut-py-" + System.nanoTime());
+        try {
+            // the shortcut is offered on a .py file (and still on a .cfg), not on others
+            IFile solo = Fixtures.write(p, "solo/robot.py", "print('hi')\n");
+            IFile soloCfg = Fixtures.write(p, "solo/robot.cfg", "driver ( name \"stage\" provides [ \"simulation:0\" ] )\n");
+            assertTrue(shortcutEnabledOn(solo), "Run As > Robot Session on a .py file");
+            assertTrue(shortcutEnabledOn(soloCfg), "Run As > Robot Session on a .cfg file");
+            assertFalse(shortcutEnabledOn(p.getFile("worlds/pioneer-laser-sonar.world")), "not on a .world file");
+
+            ILaunchConfiguration c = RobotSessionShortcut.configurationForProgram(solo);
+            assertEquals(solo.getFullPath().toString(), c.getAttribute(LaunchAttributes.PROGRAM, ""));
+            assertEquals(soloCfg.getFullPath().toString(), c.getAttribute(LaunchAttributes.CFG, ""), "the only cfg beside it");
+            assertEquals(c, RobotSessionShortcut.configurationForProgram(solo), "the same configuration the next time");
+            c.delete();
+
+            // beside several cfgs and in a project with several: no cfg chosen (the launch dialog asks)
+            IFile among = Fixtures.write(p, "worlds/avoid.py", "print('hi')\n");
+            ILaunchConfiguration d = RobotSessionShortcut.configurationForProgram(among);
+            assertEquals("", d.getAttribute(LaunchAttributes.CFG, ""));
+            d.delete();
+        } finally {
+            p.delete(true, true, new NullProgressMonitor());
+        }
+    }
+
+    /** Evaluates the Robot Session shortcut's contextual-launch enablement (from plugin.xml) for a selection of {@code file}. */
+    private static boolean shortcutEnabledOn(IFile file) throws CoreException {
+        IConfigurationElement shortcut = java.util.Arrays.stream(Platform.getExtensionRegistry()
+                .getConfigurationElementsFor("org.eclipse.debug.ui.launchShortcuts"))
+                .filter(e -> "org.stagecraft.tools.robotSession.shortcut".equals(e.getAttribute("id"))).findFirst().orElseThrow();
+        IConfigurationElement enablement = shortcut.getChildren("contextualLaunch")[0].getChildren("enablement")[0];
+        Expression expression = ExpressionConverter.getDefault().perform(enablement);
+        EvaluationContext context = new EvaluationContext(null, List.of(file));
+        context.addVariable("selection", List.of(file));
+        return expression.evaluate(context) == EvaluationResult.TRUE;
     }
 }

@@ -29,6 +29,9 @@ public final class LaunchAttributes {
     public static final String PYDEV_RUN_TYPE = "org.python.pydev.debug.regularLaunchConfigurationType";
     public static final String PYDEV_PROJECT = "org.python.pydev.debug.ATTR_PROJECT";
     public static final String PYDEV_NATURE = "org.python.pydev.pythonNature";
+    /** PyDev's bundles whose public API a Robot Session calls by reflection (PyDev's computed PYTHONPATH). */
+    public static final String PYDEV_DEBUG_BUNDLE = "org.python.pydev.debug";
+    public static final String PYDEV_AST_BUNDLE = "org.python.pydev.ast";
     public static final String EXTERNAL_TOOLS_LOCATION = "org.eclipse.ui.externaltools.ATTR_LOCATION";
     public static final String EXTERNAL_TOOLS_WORKING_DIRECTORY = "org.eclipse.ui.externaltools.ATTR_WORKING_DIRECTORY";
 
