@@ -94,9 +94,16 @@ public final class SessionHolds implements AutoCloseable {
                 null, detail(s)));
     }
 
-    /** "running" and the hold's status line, e.g. "held: Robots held (suspended in the debugger): …". */
+    private static final String HELD = "held — ";
+
+    /** "running" and the hold's status line, e.g. "held — Robots held (suspended in the debugger): …". */
     public static String detail(HoldState s) {
-        return (s.held() ? "held — " : "running — ") + s.description();
+        return (s.held() ? HELD : "running — ") + s.description();
+    }
+
+    /** Whether a Tools view row's detail is that of a session with held robots. */
+    public static boolean isHeldDetail(String detail) {
+        return detail != null && detail.startsWith(HELD);
     }
 
     /** The session ends: no more holds from the debugger or the emergency stop. */
