@@ -192,6 +192,7 @@ class RobotViewWorkbenchTest {
             assertTrue(!late.scene().feed("laser").snapshot().isEmpty(), "the laser layer starts from the last scan");
             assertTrue(late.scene().world().robot(robot).poseSeen());
             assertEquals("HELD (suspended in the debugger)", late.holdText());
+            GlHarness.spinUntil(() -> late.frames() > 0, 10_000, "the new view to draw its first frame");
             late.scene().camera().follow(robot);
             FramePixels f = late.capture();
             assertTrue(f.count(LASER_HIT, 2) >= 10, "the last laser scan is drawn: " + f.count(LASER_HIT, 2));
