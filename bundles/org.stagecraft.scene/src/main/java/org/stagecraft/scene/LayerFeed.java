@@ -47,8 +47,23 @@ public final class LayerFeed implements AutoCloseable {
     public LayerFeed subscribe(StreamBus bus, StreamPattern pattern, DeliveryPolicy policy) {
         close();
         keepAll = policy.isLossless();
+        // a view opened late shows the last known state at once (e.g. while the program is suspended and
+        // nothing new comes); seeded before subscribing, so anything newer replaces it. A message published
+        // between the two is missed until its stream's next one.
+        LastMessages.find(bus).ifPresent(store -> seed(store.matching(pattern)));
         subscription = bus.subscribe(pattern, policy, this::accept);
         return this;
+    }
+
+    private void seed(List<StreamMessage> known) {
+        if (known.isEmpty()) {
+            return;
+        }
+        for (StreamMessage m : known) {
+            latest.put(m.key(), m);
+        }
+        version.incrementAndGet();
+        onChange.run();
     }
 
     /** Messages accepted since the last call, oldest first (only kept for lossless subscriptions). */

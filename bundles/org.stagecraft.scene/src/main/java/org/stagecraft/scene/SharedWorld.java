@@ -21,6 +21,7 @@ public final class SharedWorld {
 
     private SharedWorld(StreamBus bus) {
         feed = new SceneFeed(bus, world, () -> listeners.forEach(Runnable::run));
+        LastMessages.of(bus); // the layers of a view opened later start from the newest data, not from nothing
     }
 
     /** The bus's shared world, created (and subscribed) on first use. */

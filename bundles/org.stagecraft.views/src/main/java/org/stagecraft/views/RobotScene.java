@@ -42,6 +42,8 @@ public final class RobotScene implements AutoCloseable {
     private final FloatList minor = new FloatList(), major = new FloatList();
     private GLUT glut;
     private long frames;
+    /** Text drawn over everything (e.g. "HELD (suspended in the debugger)"), or null. */
+    private volatile String overlay;
 
     /** @param onChange told (on bus threads) whenever new data arrived: the view schedules a redraw */
     public RobotScene(WorldModel world, Camera camera, Runnable onChange) {
@@ -149,6 +151,15 @@ public final class RobotScene implements AutoCloseable {
         return feeds.get(layerId);
     }
 
+    /** Text to draw over the robots, top left, in red (null: none); e.g. the robot hold's state. */
+    public void overlay(String text) {
+        overlay = text;
+    }
+
+    public String overlay() {
+        return overlay;
+    }
+
     public void showGrid(boolean show) {
         grid = show;
     }
@@ -192,6 +203,7 @@ public final class RobotScene implements AutoCloseable {
             }
             r.frame(gl, new RenderInput(l, f.snapshot(), f.drainUnseen(), f.version(), world, camera));
         }
+        drawOverlay(gl, height);
         frames++;
     }
 
@@ -217,6 +229,30 @@ public final class RobotScene implements AutoCloseable {
             gl.glWindowPos2d(3, camera.worldToWindowY(y) + 3);
             glut.glutBitmapString(GLUT.BITMAP_HELVETICA_10, label(y));
         }
+    }
+
+    /** The overlay on a white band, so it reads over any layer. */
+    private void drawOverlay(GL2 gl, int height) {
+        String text = overlay;
+        if (text == null) {
+            return;
+        }
+        if (glut == null) {
+            glut = new GLUT();
+        }
+        int w = glut.glutBitmapLength(GLUT.BITMAP_HELVETICA_18, text);
+        double mpp = camera.metresPerPixel();
+        double x0 = camera.left(), y1 = camera.top();
+        gl.glColor4f(1, 1, 1, 0.85f);
+        gl.glBegin(GL2.GL_QUADS);
+        gl.glVertex2d(x0, y1);
+        gl.glVertex2d(x0 + (w + 16) * mpp, y1);
+        gl.glVertex2d(x0 + (w + 16) * mpp, y1 - 30 * mpp);
+        gl.glVertex2d(x0, y1 - 30 * mpp);
+        gl.glEnd();
+        gl.glColor4f(0.85f, 0.05f, 0.05f, 1);
+        gl.glWindowPos2d(8, height - 22);
+        glut.glutBitmapString(GLUT.BITMAP_HELVETICA_18, text);
     }
 
     private static String label(double metres) {

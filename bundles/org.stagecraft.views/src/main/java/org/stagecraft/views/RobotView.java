@@ -25,6 +25,7 @@ import org.stagecraft.core.streams.BusSources;
 import org.stagecraft.core.streams.WorkbenchBus;
 import org.stagecraft.scene.Camera;
 import org.stagecraft.scene.DefaultLayers;
+import org.stagecraft.scene.HoldStatus;
 import org.stagecraft.scene.LayerSpec;
 import org.stagecraft.scene.RobotId;
 import org.stagecraft.scene.RobotState;
@@ -68,6 +69,8 @@ public class RobotView extends ViewPart {
     private SharedWorld shared;
     private AutoCloseable worldListener;
     private RobotScene scene;
+    /** Whether the source's robots are held (robot hold), drawn over the robots. */
+    private HoldStatus holdStatus;
     private GLCanvas canvas;
     private RedrawThrottle redraw;
     private Consumer<FramePixels> readback;
@@ -102,6 +105,7 @@ public class RobotView extends ViewPart {
         installMouse();
         installMenu();
         scene.connect(bus, false); // the world model is the bus's shared one
+        followHolds();
         var display = parent.getDisplay();
         sourcesListener = BusSources.listen(() -> {
             if (!display.isDisposed()) {
@@ -144,11 +148,25 @@ public class RobotView extends ViewPart {
             shared = SharedWorld.of(bus);
             worldListener = shared.listen(redraw::request);
             scene.reconnect(bus, shared.world());
+            followHolds();
             applySetup(setup()); // new renderers and feeds: nothing drawn from the old source stays
             followFirstRobot = true; // the new source's robots may have other addresses
             redraw.request();
         }
         describeSource();
+    }
+
+    /** Follows the hold state of the bus the view shows (a redraw puts the text on or takes it off). */
+    private void followHolds() {
+        if (holdStatus != null) {
+            holdStatus.close();
+        }
+        holdStatus = new HoldStatus(bus, redraw::request);
+    }
+
+    /** What the view writes over the robots about the robot hold, or null (for tests). */
+    public String holdText() {
+        return holdStatus == null ? null : holdStatus.overlayText();
     }
 
     private void describeSource() {
@@ -226,6 +244,9 @@ public class RobotView extends ViewPart {
         if (scene != null) {
             scene.close();
         }
+        if (holdStatus != null) {
+            holdStatus.close();
+        }
         closeWorldListener();
         if (sourcesListener != null) {
             try {
@@ -270,6 +291,7 @@ public class RobotView extends ViewPart {
         public void display(GLAutoDrawable d) {
             GL2 gl = d.getGL().getGL2();
             int w = d.getSurfaceWidth(), h = d.getSurfaceHeight();
+            scene.overlay(holdText());
             scene.render(gl, w, h);
             Consumer<FramePixels> r = readback;
             if (r != null) {

@@ -43,6 +43,7 @@ import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.replay.ui.internal.EditorInputs;
 import org.stagecraft.replay.ui.internal.ExportMenu;
 import org.stagecraft.replay.ui.internal.FollowPace;
+import org.stagecraft.replay.log.HoldMarks;
 import org.stagecraft.replay.ui.internal.InspectorPanel;
 import org.stagecraft.replay.ui.internal.LogExport;
 import org.stagecraft.replay.ui.internal.SharedLog;
@@ -338,6 +339,9 @@ public class SessionLogEditor extends EditorPart {
         transport.setEnabled(true);
         timeline.setRange(l.startNanos(), l.endNanos());
         timeline.setStops(l.problems().stream().map(LogProblem::timeNanos).toList());
+        HoldMarks holds = holdMarks(l);
+        timeline.setHolds(holds);
+        inspector.setHolds(holds);
         timeline.setSnapshot(null);
         if (densityJob != null) {
             densityJob.cancel(); // the old pass ends soon and lets go of the old log
@@ -591,6 +595,16 @@ public class SessionLogEditor extends EditorPart {
 
     public MessageColumns columns() {
         return columns;
+    }
+
+    /** The log's robot holds (none if it has none or they cannot be read: the rest of the log still shows). */
+    private HoldMarks holdMarks(SessionLog l) {
+        try {
+            return new HoldMarks(l.holdEntries(), l.endNanos());
+        } catch (java.io.IOException | RuntimeException e) {
+            LOG.warn("Session Log: robot holds of " + l.path() + " not shown: " + e.getMessage());
+            return HoldMarks.none();
+        }
     }
 
     public TimelineCanvas timeline() {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 
 /**
@@ -42,6 +43,15 @@ public interface SessionLog extends AutoCloseable {
      * file stopped being readable. The readable part still replays.
      */
     List<LogProblem> problems();
+
+    /**
+     * What Stagecraft's robot holds did during the session (docs/debugging-robots.md): injected zero
+     * commands, held-back program messages, holds on and off. Empty for logs without holds and for
+     * formats that cannot record them.
+     */
+    default List<HoldEntry> holdEntries() throws IOException {
+        return List.of();
+    }
 
     /**
      * A new cursor positioned before the first message whose time is at or after {@code timeNanos}.

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 
 import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.LogConnection;
 import org.stagecraft.spy.log.SpyLogReader;
 import org.stagecraft.spy.proxy.ConnectionInfo;
@@ -101,6 +102,11 @@ final class SpyLogSession implements SessionLog {
     @Override
     public List<LogProblem> problems() {
         return problems;
+    }
+
+    @Override
+    public List<HoldEntry> holdEntries() throws IOException {
+        return reader.holdEntries();
     }
 
     @Override

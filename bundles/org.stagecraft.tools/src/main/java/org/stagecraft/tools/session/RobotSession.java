@@ -12,6 +12,7 @@ import java.util.concurrent.CompletableFuture;
 
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.spy.hold.RobotHold;
 import org.stagecraft.spy.log.SpyLogWriter;
 import org.stagecraft.spy.proxy.LogRecorder;
 import org.stagecraft.spy.proxy.NetworkSpy;
@@ -189,7 +190,27 @@ public final class RobotSession implements AutoCloseable {
         }
         pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder, OBSERVER_QUEUE_BYTES);
         spy = new NetworkSpy(routes, pipeline);
+        configureHolds(spy, config.spy());
         spy.start();
+    }
+
+    /**
+     * Before {@code start()}: holds only apply to connections accepted while they are enabled, and a robot
+     * program may connect the moment the spy listens.
+     */
+    private static void configureHolds(NetworkSpy spy, SpyOptions options) {
+        spy.upstreamGrace(options.upstreamGrace());
+        spy.holds().setEnabled(options.holdsEnabled());
+        spy.holds().setWatchdog(options.watchdog());
+    }
+
+    /**
+     * The robot hold of this session's spy (null before the spy exists): what the debugger's
+     * suspend and the user's emergency stop act on.
+     */
+    public RobotHold holds() {
+        NetworkSpy s = spy;
+        return s == null ? null : s.holds();
     }
 
     public SessionConfig config() {

@@ -20,10 +20,11 @@ import org.stagecraft.tools.process.ToolSpec;
  * @param log           the spy log to write, or null for none
  * @param bindHost      where the spy listens for robot programs (loopback unless the user says otherwise)
  * @param scratchRoot   where session scratch directories go, or null for the default
+ * @param spy           robot holds, the silence watchdog and the upstream grace of the spy (null: {@link SpyOptions#DEFAULT})
  */
 public record SessionConfig(Path cfg, List<String> playerCommand, int defaultPort, Map<String, String> playerEnvironment,
         RestartPolicy playerRestart, Duration playerReadyWithin, List<ToolSpec> tools, Path log, String bindHost,
-        Path scratchRoot) {
+        Path scratchRoot, SpyOptions spy) {
 
     public static final int PLAYER_DEFAULT_PORT = 6665;
 
@@ -41,41 +42,47 @@ public record SessionConfig(Path cfg, List<String> playerCommand, int defaultPor
         Objects.requireNonNull(playerRestart, "playerRestart");
         Objects.requireNonNull(playerReadyWithin, "playerReadyWithin");
         bindHost = bindHost == null || bindHost.isBlank() ? "127.0.0.1" : bindHost;
+        spy = spy == null ? SpyOptions.DEFAULT : spy;
     }
 
     /** A session with Player from PATH, default port, no user tools, no log. */
     public static SessionConfig of(Path cfg) {
         return new SessionConfig(cfg, List.of("player"), PLAYER_DEFAULT_PORT, Map.of(), RestartPolicy.NEVER,
-                ToolSpec.DEFAULT_READY_WITHIN, List.of(), null, null, null);
+                ToolSpec.DEFAULT_READY_WITHIN, List.of(), null, null, null, SpyOptions.DEFAULT);
     }
 
     public SessionConfig withPlayer(List<String> command, Map<String, String> env) {
         return new SessionConfig(cfg, command, defaultPort, env, playerRestart, playerReadyWithin, tools, log, bindHost,
-                scratchRoot);
+                scratchRoot, spy);
     }
 
     public SessionConfig withDefaultPort(int port) {
         return new SessionConfig(cfg, playerCommand, port, playerEnvironment, playerRestart, playerReadyWithin, tools, log,
-                bindHost, scratchRoot);
+                bindHost, scratchRoot, spy);
     }
 
     public SessionConfig withPlayerRestart(RestartPolicy policy, Duration readyWithin) {
         return new SessionConfig(cfg, playerCommand, defaultPort, playerEnvironment, policy, readyWithin, tools, log,
-                bindHost, scratchRoot);
+                bindHost, scratchRoot, spy);
     }
 
     public SessionConfig withTools(List<ToolSpec> t) {
         return new SessionConfig(cfg, playerCommand, defaultPort, playerEnvironment, playerRestart, playerReadyWithin, t, log,
-                bindHost, scratchRoot);
+                bindHost, scratchRoot, spy);
     }
 
     public SessionConfig withLog(Path file) {
         return new SessionConfig(cfg, playerCommand, defaultPort, playerEnvironment, playerRestart, playerReadyWithin, tools,
-                file, bindHost, scratchRoot);
+                file, bindHost, scratchRoot, spy);
     }
 
     public SessionConfig withScratchRoot(Path root) {
         return new SessionConfig(cfg, playerCommand, defaultPort, playerEnvironment, playerRestart, playerReadyWithin, tools,
-                log, bindHost, root);
+                log, bindHost, root, spy);
+    }
+
+    public SessionConfig withSpyOptions(SpyOptions options) {
+        return new SessionConfig(cfg, playerCommand, defaultPort, playerEnvironment, playerRestart, playerReadyWithin, tools,
+                log, bindHost, scratchRoot, options);
     }
 }

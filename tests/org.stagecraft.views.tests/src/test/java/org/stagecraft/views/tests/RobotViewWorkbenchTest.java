@@ -12,6 +12,7 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -30,12 +31,20 @@ import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.recording.peer.RecordedConnection;
 import org.stagecraft.recording.peer.ReplayPeer;
+import org.stagecraft.scene.LastMessages;
+import org.stagecraft.scene.SharedWorld;
 import org.stagecraft.scene.LayerSpec;
 import org.stagecraft.scene.RobotId;
 import org.stagecraft.scene.ViewSetup;
+import org.stagecraft.spy.hold.HoldReason;
+import org.stagecraft.spy.hold.HoldState;
+import org.stagecraft.spy.hold.HoldStreams;
 import org.stagecraft.spy.proxy.NetworkSpy;
 import org.stagecraft.spy.proxy.ObservationPipeline;
 import org.stagecraft.spy.proxy.Route;
+import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamMessage;
+import org.stagecraft.streams.StreamPattern;
 import org.stagecraft.views.FramePixels;
 import org.stagecraft.views.RobotView;
 import org.stagecraft.views.internal.ViewMemento;
@@ -58,6 +67,7 @@ import org.stagecraft.views.internal.ViewMemento;
 @Timeout(180)
 class RobotViewWorkbenchTest {
     static final int LASER_HIT = 0x1A4DFF;
+    static final int HELD_TEXT = 0xD90D0D; // the hold overlay's red (0.85, 0.05, 0.05)
     static final int ROBOT_HEADING = 0x670B0B; // the robots layer's colour (#E61A1A) at shade 0.45, opaque
     private final List<AutoCloseable> cleanup = new ArrayList<>();
     private final ExecutorService peers = Executors.newVirtualThreadPerTaskExecutor();
@@ -161,6 +171,41 @@ class RobotViewWorkbenchTest {
         assertEquals(16, late.scene().world().mount(new org.stagecraft.scene.DeviceAddress(robot, 62, 0)).elements().size());
         page.hideView(late);
         page.hideView(b);
+    }
+
+    /**
+     * Issue 18/19: a view opened while the robot program is suspended (nothing new comes) shows the last
+     * known state of the robot at once, and that its robots are held.
+     */
+    @Test
+    void aViewOpenedWhileNothingArrivesShowsTheLastKnownStateAndTheHold() throws Exception {
+        StreamBus bus = WorkbenchBus.get();
+        SharedWorld.of(bus); // as the workbench's startup does (it may not have run yet when this test runs first)
+        RobotId robot = new RobotId(replayThroughTheSpy()); // the session is over: no more data
+        bus.publish(new StreamMessage(HoldStreams.STATE, System.nanoTime(),
+                new HoldState(true, true, Map.of(HoldReason.SUSPENDED, 1), 0, 1)));
+        try {
+            LastMessages store = LastMessages.find(bus).orElseThrow(() -> new AssertionError("the workbench keeps last values"));
+            GlHarness.spinUntil(() -> !store.matching(StreamPattern.exactly(HoldStreams.STATE)).isEmpty(), 10_000,
+                    "the hold state to reach the workbench's last values");
+            RobotView late = show("suspended");
+            assertTrue(!late.scene().feed("laser").snapshot().isEmpty(), "the laser layer starts from the last scan");
+            assertTrue(late.scene().world().robot(robot).poseSeen());
+            assertEquals("HELD (suspended in the debugger)", late.holdText());
+            GlHarness.spinUntil(() -> late.frames() > 0, 10_000, "the new view to draw its first frame");
+            late.scene().camera().follow(robot);
+            FramePixels f = late.capture();
+            assertTrue(f.count(LASER_HIT, 2) >= 10, "the last laser scan is drawn: " + f.count(LASER_HIT, 2));
+            assertTrue(f.count(HELD_TEXT, 3) >= 10, "the HELD text is drawn: " + f.count(HELD_TEXT, 3));
+
+            bus.publish(new StreamMessage(HoldStreams.STATE, System.nanoTime(), new HoldState(true, false, Map.of(), 0, 1)));
+            GlHarness.spinUntil(() -> late.holdText() == null, 10_000, "the view to see the release");
+            assertEquals(0, late.capture().count(HELD_TEXT, 3), "released: no HELD text");
+            page.hideView(late);
+        } finally {
+            // the workbench bus outlives this test: leave it released
+            bus.publish(new StreamMessage(HoldStreams.STATE, System.nanoTime(), new HoldState(true, false, Map.of(), 0, 2)));
+        }
     }
 
     @Test

@@ -12,6 +12,7 @@ import org.eclipse.jface.viewers.TreeViewerColumn;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.SashForm;
 import org.eclipse.swt.graphics.Color;
+import org.stagecraft.replay.log.HoldMarks;
 import org.eclipse.swt.layout.GridData;
 import org.eclipse.swt.layout.GridLayout;
 import org.eclipse.swt.widgets.Button;
@@ -50,6 +51,9 @@ public final class InspectorPanel {
     private final java.util.function.LongSupplier replayPosition;
     private final AtomicLong generation = new AtomicLong();
     private final Color marked = new Color(255, 222, 222);
+    /** The robot hold's colour (as on the timeline): program messages held back from Player. */
+    private final Color heldBack = new Color(226, 214, 248);
+    private volatile HoldMarks holds = HoldMarks.none();
     private SharedLog shared;
     private SessionLog log;
     private MessageColumns columns;
@@ -326,10 +330,29 @@ public final class InspectorPanel {
         if (row.gapBytes() > 0) {
             cells[7] = "[" + row.gapBytes() + " bytes missing before] " + cells[7];
         }
+        boolean held = holds.heldBack(row.message());
+        if (held) {
+            cells[7] = "[held back from Player by the robot hold] " + cells[7];
+        }
         item.setText(cells);
         if (row.marked()) {
             item.setBackground(marked);
+        } else if (held) {
+            item.setBackground(heldBack);
         }
+    }
+
+    /** The log's robot holds: held-back program messages get their own colour and a note. */
+    public void setHolds(HoldMarks marks) {
+        holds = marks == null ? HoldMarks.none() : marks;
+        if (!table.isDisposed()) {
+            table.clearAll();
+        }
+    }
+
+    /** Whether row {@code index} is shown as held back (for tests). */
+    public boolean rowHeldBack(int index) {
+        return index >= 0 && index < window.rows().size() && holds.heldBack(window.rows().get(index).message());
     }
 
     /** Selects row {@code index} as a user would (tests: the same path as a click). */

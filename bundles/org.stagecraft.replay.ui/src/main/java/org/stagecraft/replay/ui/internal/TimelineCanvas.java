@@ -6,6 +6,7 @@ import java.util.function.LongConsumer;
 
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.Color;
+import org.stagecraft.replay.log.HoldMarks;
 import org.eclipse.swt.graphics.GC;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Canvas;
@@ -15,7 +16,8 @@ import org.stagecraft.replay.analysis.TimelineDensity;
 
 /**
  * The Session Log's timeline, drawn with GC: a time axis, a row of marks (red: decode problems and
- * unframed bytes, orange: gaps, a red triangle where the readable log stops), and one track per stream
+ * unframed bytes, orange: gaps, a red triangle where the readable log stops; lavender: robots held, with
+ * violet ticks for injected zero commands and held-back messages), and one track per stream
  * whose bars are its message density per bucket (scaled to the track's busiest bucket), with the replay
  * cursor across all. Clicking or dragging seeks. Shows a {@link TimelineDensity.Snapshot}; holds nothing
  * else of the log.
@@ -29,6 +31,7 @@ public final class TimelineCanvas {
     private long start, end = 1;
     private long position = Long.MIN_VALUE;
     private List<Long> stops = List.of();
+    private HoldMarks holds = HoldMarks.none();
     private boolean dragging;
 
     public TimelineCanvas(Composite parent, LongConsumer onSeek) {
@@ -89,6 +92,16 @@ public final class TimelineCanvas {
     public void setStops(List<Long> times) {
         stops = List.copyOf(times);
         canvas.redraw();
+    }
+
+    /** The robot holds of the log: held spans and injected/held-back instants, in the hold colour. */
+    public void setHolds(HoldMarks marks) {
+        holds = marks == null ? HoldMarks.none() : marks;
+        canvas.redraw();
+    }
+
+    public HoldMarks holds() {
+        return holds;
     }
 
     public void setPosition(long t) {
@@ -190,9 +203,32 @@ public final class TimelineCanvas {
         return 10 * p;
     }
 
+    /** Lavender band while held (under the other marks), a violet tick per injected zero command, a lighter one per held-back message. */
+    static final int[] HOLD_BAND = { 226, 214, 248 }, INJECTED = { 120, 40, 200 }, HELD_BACK = { 170, 130, 230 };
+
+    private void drawHolds(GC gc, int y) {
+        if (holds.isEmpty()) {
+            return;
+        }
+        gc.setBackground(new Color(HOLD_BAND[0], HOLD_BAND[1], HOLD_BAND[2]));
+        for (HoldMarks.Span sp : holds.spans()) {
+            int x0 = xOf(sp.startNanos()), x1 = Math.max(x0 + 1, xOf(sp.endNanos()));
+            gc.fillRectangle(x0, y, x1 - x0, MARKS);
+        }
+        gc.setForeground(new Color(HELD_BACK[0], HELD_BACK[1], HELD_BACK[2]));
+        for (long t : holds.heldBackTimes()) {
+            gc.drawLine(xOf(t), y + MARKS / 2, xOf(t), y + MARKS - 1);
+        }
+        gc.setForeground(new Color(INJECTED[0], INJECTED[1], INJECTED[2]));
+        for (long t : holds.injectedTimes()) {
+            gc.drawLine(xOf(t), y, xOf(t), y + MARKS / 2);
+        }
+    }
+
     private void drawMarks(GC gc) {
         var display = canvas.getDisplay();
         int y = AXIS;
+        drawHolds(gc, y);
         if (snapshot != null) {
             Color gap = new Color(255, 140, 0);
             for (int b = 0; b < snapshot.buckets(); b++) {

@@ -23,7 +23,17 @@ public final class LaunchAttributes {
     /** Names of the user tools to start (list); absent: every enabled tool. */
     public static final String TOOLS = P + "tools";
 
+    /** Hold the robots while the robot program is suspended in the debugger (boolean, true). */
+    public static final String HOLD_WHEN_SUSPENDED = P + "holdWhenSuspended";
+    /** The silence watchdog is on (boolean, false). */
+    public static final String WATCHDOG = P + "watchdog";
+    /** The silence watchdog's timeout in milliseconds (int, {@value #DEFAULT_WATCHDOG_MILLIS}). */
+    public static final String WATCHDOG_MILLIS = P + "watchdogMillis";
+    /** How long a robot program's connection waits for Player to accept, in seconds (int, 5). */
+    public static final String UPSTREAM_GRACE_SECONDS = P + "upstreamGraceSeconds";
+
     public static final String DEFAULT_LOG_FOLDER = "spy-logs";
+    public static final int DEFAULT_WATCHDOG_MILLIS = 500;
 
     /** PyDev's ids, used by string only: PyDev is optional and not a build dependency. */
     public static final String PYDEV_RUN_TYPE = "org.python.pydev.debug.regularLaunchConfigurationType";

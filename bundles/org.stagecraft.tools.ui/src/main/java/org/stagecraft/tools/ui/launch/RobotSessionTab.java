@@ -18,8 +18,12 @@ import org.eclipse.swt.widgets.Text;
 import org.eclipse.ui.dialogs.ResourceListSelectionDialog;
 import org.stagecraft.tools.process.RestartPolicy;
 import org.stagecraft.tools.session.SessionConfig;
+import org.stagecraft.tools.session.SpyOptions;
 
-/** The Player cfg, the robot program, Player's program, port, restart policy, and where the spy log goes. */
+/**
+ * The Player cfg, the robot program, Player's program, port, restart policy, where the spy log goes, and
+ * how the spy treats robot programs: upstream grace, robot holds while suspended, the silence watchdog.
+ */
 public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
     private Text cfg;
     private Text program;
@@ -27,6 +31,10 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
     private Text port;
     private Text restart;
     private Text logFolder;
+    private Text grace;
+    private Button holdWhenSuspended;
+    private Button watchdog;
+    private Text watchdogSeconds;
 
     @Override
     public void createControl(Composite parent) {
@@ -38,6 +46,23 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         port = row(c, "Default port (player -p):", false);
         restart = row(c, "Restart Player (never, on-failure:N, always:N):", false);
         logFolder = row(c, "Spy log folder in the project (empty: no log):", false);
+        grace = row(c, "Seconds a robot program waits for Player (upstream grace):", false);
+        holdWhenSuspended = check(c, "Hold the robots while the program is suspended",
+                "While the debugger has the robot program suspended (breakpoint, step, Suspend), the Network Spy sends "
+                        + "zero velocity to its robots and holds back its motion commands; resuming releases them. "
+                        + "Also lets the emergency stop hold this session's robots.");
+        watchdog = new Button(c, SWT.CHECK);
+        watchdog.setText("Silence watchdog: hold a moving robot when its program sends nothing for (seconds):");
+        watchdog.setToolTipText("Catches what the debugger does not tell: a program stuck in a loop, a crashed process "
+                + "whose socket stays open, a long pause. The robot is held until its program sends again.");
+        watchdog.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, false, false, 1, 1));
+        watchdogSeconds = new Text(c, SWT.BORDER);
+        watchdogSeconds.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 2, 1));
+        watchdogSeconds.addModifyListener(e -> updateLaunchConfigurationDialog());
+        watchdog.addListener(SWT.Selection, e -> {
+            watchdogSeconds.setEnabled(watchdog.getSelection());
+            updateLaunchConfigurationDialog();
+        });
         Label note = new Label(c, SWT.WRAP);
         note.setText("Player runs on a copy of the cfg with every port moved; the Network Spy listens on the original "
                 + "ports, so the robot program connects as usual. Tools from Preferences > Stagecraft Tools start first.");
@@ -64,11 +89,38 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         return t;
     }
 
+    private Button check(Composite c, String label, String tooltip) {
+        Button b = new Button(c, SWT.CHECK);
+        b.setText(label);
+        b.setToolTipText(tooltip);
+        b.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false, 3, 1));
+        b.addListener(SWT.Selection, e -> updateLaunchConfigurationDialog());
+        return b;
+    }
+
+    /** Milliseconds as the seconds the user reads ("0.5"). */
+    static String seconds(int millis) {
+        return java.math.BigDecimal.valueOf(millis, 3).stripTrailingZeros().toPlainString();
+    }
+
+    /** The seconds the user typed as milliseconds; throws NumberFormatException for anything but a positive number. */
+    static int millis(String seconds) {
+        int ms = new java.math.BigDecimal(seconds.trim()).movePointRight(3).intValueExact();
+        if (ms <= 0) {
+            throw new NumberFormatException();
+        }
+        return ms;
+    }
+
     @Override
     public void setDefaults(ILaunchConfigurationWorkingCopy c) {
         c.setAttribute(LaunchAttributes.DEFAULT_PORT, SessionConfig.PLAYER_DEFAULT_PORT);
         c.setAttribute(LaunchAttributes.PLAYER_RESTART, "never");
         c.setAttribute(LaunchAttributes.LOG_FOLDER, LaunchAttributes.DEFAULT_LOG_FOLDER);
+        c.setAttribute(LaunchAttributes.HOLD_WHEN_SUSPENDED, SpyOptions.DEFAULT.holdWhenSuspended());
+        c.setAttribute(LaunchAttributes.WATCHDOG, false);
+        c.setAttribute(LaunchAttributes.WATCHDOG_MILLIS, LaunchAttributes.DEFAULT_WATCHDOG_MILLIS);
+        c.setAttribute(LaunchAttributes.UPSTREAM_GRACE_SECONDS, (int) SpyOptions.DEFAULT.upstreamGrace().toSeconds());
     }
 
     @Override
@@ -80,6 +132,14 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
             port.setText(String.valueOf(c.getAttribute(LaunchAttributes.DEFAULT_PORT, SessionConfig.PLAYER_DEFAULT_PORT)));
             restart.setText(c.getAttribute(LaunchAttributes.PLAYER_RESTART, "never"));
             logFolder.setText(c.getAttribute(LaunchAttributes.LOG_FOLDER, LaunchAttributes.DEFAULT_LOG_FOLDER));
+            grace.setText(String.valueOf(c.getAttribute(LaunchAttributes.UPSTREAM_GRACE_SECONDS,
+                    (int) SpyOptions.DEFAULT.upstreamGrace().toSeconds())));
+            holdWhenSuspended.setSelection(c.getAttribute(LaunchAttributes.HOLD_WHEN_SUSPENDED,
+                    SpyOptions.DEFAULT.holdWhenSuspended()));
+            watchdog.setSelection(c.getAttribute(LaunchAttributes.WATCHDOG, false));
+            watchdogSeconds.setText(seconds(c.getAttribute(LaunchAttributes.WATCHDOG_MILLIS,
+                    LaunchAttributes.DEFAULT_WATCHDOG_MILLIS)));
+            watchdogSeconds.setEnabled(watchdog.getSelection());
         } catch (CoreException e) {
             setErrorMessage(e.getMessage());
         }
@@ -97,6 +157,18 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         }
         c.setAttribute(LaunchAttributes.PLAYER_RESTART, restart.getText().trim());
         c.setAttribute(LaunchAttributes.LOG_FOLDER, logFolder.getText().trim());
+        try {
+            c.setAttribute(LaunchAttributes.UPSTREAM_GRACE_SECONDS, Integer.parseInt(grace.getText().trim()));
+        } catch (NumberFormatException e) {
+            // isValid reports it
+        }
+        c.setAttribute(LaunchAttributes.HOLD_WHEN_SUSPENDED, holdWhenSuspended.getSelection());
+        c.setAttribute(LaunchAttributes.WATCHDOG, watchdog.getSelection());
+        try {
+            c.setAttribute(LaunchAttributes.WATCHDOG_MILLIS, millis(watchdogSeconds.getText()));
+        } catch (NumberFormatException | ArithmeticException e) {
+            // isValid reports it
+        }
     }
 
     @Override
@@ -114,6 +186,23 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         } catch (NumberFormatException e) {
             setErrorMessage("Default port '" + port.getText() + "' is not 1..65535.");
             return false;
+        }
+        try {
+            if (Integer.parseInt(grace.getText().trim()) < 0) {
+                throw new NumberFormatException();
+            }
+        } catch (NumberFormatException e) {
+            setErrorMessage("Upstream grace '" + grace.getText() + "' is not a number of seconds (0 or more).");
+            return false;
+        }
+        if (watchdog.getSelection()) {
+            try {
+                millis(watchdogSeconds.getText());
+            } catch (NumberFormatException | ArithmeticException e) {
+                setErrorMessage("Watchdog timeout '" + watchdogSeconds.getText() + "' is not a positive number of seconds "
+                        + "(at most three decimals).");
+                return false;
+            }
         }
         try {
             RestartPolicy.parse(restart.getText());

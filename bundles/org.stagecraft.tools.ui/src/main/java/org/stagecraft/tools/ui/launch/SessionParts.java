@@ -44,6 +44,8 @@ public final class SessionParts implements ToolListener {
     private volatile String failure;
     /** The session's bus republished on the workbench bus, where the Robot Views listen. */
     private volatile Subscription toWorkbench;
+    /** The robot hold's IDE wiring (debugger suspend, emergency stop, Tools view), once started. */
+    private volatile SessionHolds holds;
 
     public SessionParts(ILaunch launch, String sessionName) {
         this.launch = launch;
@@ -82,6 +84,7 @@ public final class SessionParts implements ToolListener {
         ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.READY, ProcessHandle.current().pid(), 0,
                 null, "spying on " + s.portMap().keySet()));
         ToolsModel.get().update(new ToolsModel.Row(sessionName, SESSION_PART, ToolState.READY, -1, 0, null, "running"));
+        holds = SessionHolds.attach(this, s);
         s.failed().thenAccept(this::sessionFailed);
         s.spy().addListener(n -> spyNotice(p, n));
     }
@@ -123,8 +126,27 @@ public final class SessionParts implements ToolListener {
     }
 
     /** The robot program ran in a launch of its own (PyDev): it ends with the session. */
-    public synchronized void link(ILaunch other) {
-        linkedLaunches.add(other);
+    public void link(ILaunch other) {
+        synchronized (this) {
+            linkedLaunches.add(other);
+        }
+        SessionHolds h = holds;
+        if (h != null) {
+            h.linked(other); // its program may be suspended already
+        }
+    }
+
+    /** The session's own launch and the launches linked to it. */
+    public synchronized List<ILaunch> launches() {
+        List<ILaunch> all = new ArrayList<>(linkedLaunches.size() + 1);
+        all.add(launch);
+        all.addAll(linkedLaunches);
+        return all;
+    }
+
+    /** The session's robot hold in the IDE (null until the session runs). */
+    public SessionHolds holds() {
+        return holds;
     }
 
     @Override
@@ -202,6 +224,10 @@ public final class SessionParts implements ToolListener {
 
     /** Stops everything and marks every part ended. */
     public void stopNow() {
+        SessionHolds h = holds;
+        if (h != null) {
+            h.close();
+        }
         List<ILaunch> others;
         synchronized (this) {
             stopping = true;

@@ -21,6 +21,7 @@ import org.stagecraft.tools.process.RestartPolicy;
 import org.stagecraft.tools.process.ToolSpec;
 import org.stagecraft.tools.session.PlayerLocator;
 import org.stagecraft.tools.session.SessionConfig;
+import org.stagecraft.tools.session.SpyOptions;
 import org.stagecraft.tools.types.ToolDefinition;
 import org.stagecraft.tools.ui.prefs.ToolPreferences;
 import org.stagecraft.tools.ui.registry.ToolTypeExtensionRegistry;
@@ -89,11 +90,30 @@ record SessionSettings(SessionConfig config, IFile cfgFile, IFile program, IProj
         SessionConfig config;
         try {
             config = SessionConfig.of(cfg).withPlayer(List.of(player.program()), player.environment()).withDefaultPort(port)
-                    .withPlayerRestart(restart, Duration.ofSeconds(seconds)).withTools(tools).withLog(log);
+                    .withPlayerRestart(restart, Duration.ofSeconds(seconds)).withTools(tools).withLog(log)
+                    .withSpyOptions(spyOptions(c));
         } catch (IllegalArgumentException e) {
             throw error(e.getMessage());
         }
         return new SessionSettings(config, cfgFile, program, project, logFolder);
+    }
+
+    /** Robot holds, the watchdog and the upstream grace, as the Robot Session tab set them (defaults: {@link SpyOptions#DEFAULT}). */
+    static SpyOptions spyOptions(ILaunchConfiguration c) throws CoreException {
+        int grace = c.getAttribute(LaunchAttributes.UPSTREAM_GRACE_SECONDS, (int) SpyOptions.DEFAULT.upstreamGrace().toSeconds());
+        if (grace < 0) {
+            throw error("the upstream grace period of " + grace + " s is negative (Robot Session tab)");
+        }
+        boolean hold = c.getAttribute(LaunchAttributes.HOLD_WHEN_SUSPENDED, SpyOptions.DEFAULT.holdWhenSuspended());
+        Duration watchdog = null;
+        if (c.getAttribute(LaunchAttributes.WATCHDOG, false)) {
+            int ms = c.getAttribute(LaunchAttributes.WATCHDOG_MILLIS, LaunchAttributes.DEFAULT_WATCHDOG_MILLIS);
+            if (ms <= 0) {
+                throw error("the silence watchdog's timeout of " + ms + " ms is not positive (Robot Session tab)");
+            }
+            watchdog = Duration.ofMillis(ms);
+        }
+        return new SpyOptions(Duration.ofSeconds(grace), hold, watchdog);
     }
 
     /** The user tools to start: the named ones (in preference order), or every enabled one. */

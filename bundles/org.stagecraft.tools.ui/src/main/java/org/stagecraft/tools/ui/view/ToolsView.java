@@ -7,14 +7,17 @@ import org.eclipse.jface.viewers.ColumnLabelProvider;
 import org.eclipse.jface.viewers.TableViewer;
 import org.eclipse.jface.viewers.TableViewerColumn;
 import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.Color;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.ui.part.ViewPart;
+import org.stagecraft.tools.ui.launch.SessionHolds;
 
 /** Every part of the running Robot Sessions with its state, process id, restarts and last exit code. */
 public final class ToolsView extends ViewPart {
     public static final String ID = "org.stagecraft.tools.ui.toolsView";
     private TableViewer table;
+    private final Color held = new Color(226, 214, 248);
     private final Runnable refresh = () -> {
         Display d = table == null ? null : table.getControl().getDisplay();
         if (d != null && !d.isDisposed()) {
@@ -62,6 +65,12 @@ public final class ToolsView extends ViewPart {
             @Override
             public String getText(Object element) {
                 return text.apply((ToolsModel.Row) element);
+            }
+
+            @Override
+            public Color getBackground(Object element) {
+                // a session whose robots are held stands out, in the hold colour of the other views
+                return SessionHolds.isHeldDetail(((ToolsModel.Row) element).detail()) ? held : null;
             }
         });
     }

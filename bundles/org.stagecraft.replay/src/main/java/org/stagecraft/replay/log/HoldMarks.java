@@ -1,0 +1,87 @@
+package org.stagecraft.replay.log;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.spy.log.HoldEntry;
+
+/**
+ * A log's robot holds, shaped for the Session Log editor: the spans during which robots were held (for
+ * the timeline), the instants of injected and held-back messages, and which of the program's messages
+ * were held back (for the inspector, which lists what the program sent).
+ */
+public final class HoldMarks {
+    /** A time the robots were held, with the reasons the log gave. */
+    public record Span(long startNanos, long endNanos, String text) {
+    }
+
+    private final List<Span> spans;
+    private final List<Long> injected = new ArrayList<>();
+    private final List<Long> heldBack = new ArrayList<>();
+    private final Set<Long> heldBackMessages = new HashSet<>();
+
+    /** @param endNanos where a hold still on at the end of the log is drawn to */
+    public HoldMarks(List<HoldEntry> entries, long endNanos) {
+        List<Span> out = new ArrayList<>();
+        long on = Long.MIN_VALUE;
+        String why = "";
+        for (HoldEntry e : entries) {
+            switch (e.action()) {
+                case HOLD_ON -> {
+                    if (on == Long.MIN_VALUE) {
+                        on = e.timeNanos();
+                        why = e.text();
+                    }
+                }
+                case HOLD_OFF -> {
+                    if (on != Long.MIN_VALUE) {
+                        out.add(new Span(on, e.timeNanos(), why));
+                        on = Long.MIN_VALUE;
+                    }
+                }
+                case INJECTED -> injected.add(e.timeNanos());
+                case HELD_BACK -> {
+                    heldBack.add(e.timeNanos());
+                    heldBackMessages.add(key(e.conn(), e.programOffset()));
+                }
+            }
+        }
+        if (on != Long.MIN_VALUE) {
+            out.add(new Span(on, Math.max(on, endNanos), why)); // the log ended while held
+        }
+        spans = List.copyOf(out);
+    }
+
+    public static HoldMarks none() {
+        return new HoldMarks(List.of(), 0);
+    }
+
+    public List<Span> spans() {
+        return spans;
+    }
+
+    public List<Long> injectedTimes() {
+        return List.copyOf(injected);
+    }
+
+    public List<Long> heldBackTimes() {
+        return List.copyOf(heldBack);
+    }
+
+    /** Whether this log message is a program message the hold kept from Player. */
+    public boolean heldBack(LogMessage m) {
+        return m.connection() != null && m.dir() == Direction.CLIENT_TO_SERVER
+                && heldBackMessages.contains(key(m.connection().id(), m.streamOffset()));
+    }
+
+    public boolean isEmpty() {
+        return spans.isEmpty() && injected.isEmpty() && heldBack.isEmpty();
+    }
+
+    private static long key(int conn, long offset) {
+        return ((long) conn << 48) ^ offset; // offsets stay far below 2^48 bytes
+    }
+}

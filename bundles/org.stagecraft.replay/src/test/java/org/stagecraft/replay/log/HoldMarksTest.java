@@ -1,0 +1,66 @@
+package org.stagecraft.replay.log;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.spy.log.HoldEntry;
+import org.stagecraft.spy.log.HoldEntry.Action;
+import org.stagecraft.spy.log.SpyLogWriter;
+import org.stagecraft.spy.proxy.ConnectionInfo;
+
+/** The Session Log editor's view of a log's robot holds: spans, ticks, held-back program messages. */
+class HoldMarksTest {
+    @TempDir
+    Path tmp;
+
+    private static HoldEntry e(long t, int conn, Action a, long programOffset, String text) {
+        return new HoldEntry(t, conn, conn == 0 ? 0 : 6665, a, programOffset, programOffset, new byte[a == Action.HOLD_ON
+                || a == Action.HOLD_OFF ? 0 : 48], text);
+    }
+
+    private static LogMessage program(int conn, Direction dir, long offset) {
+        return new LogMessage(10, new ConnectionInfo(conn, 6665, "c", "l", "u"), dir, offset, LogMessage.Kind.FRAME,
+                new byte[48], null, "");
+    }
+
+    @Test
+    void spansTicksAndHeldBackMessages() {
+        HoldMarks m = new HoldMarks(List.of(e(100, 0, Action.HOLD_ON, 0, "suspended in the debugger"),
+                e(101, 1, Action.INJECTED, 960, "zero velocity"), e(150, 1, Action.HELD_BACK, 1008, "held"),
+                e(200, 0, Action.HOLD_OFF, 0, ""), e(300, 0, Action.HOLD_ON, 0, "emergency stop")), 400);
+        assertEquals(List.of(new HoldMarks.Span(100, 200, "suspended in the debugger"),
+                new HoldMarks.Span(300, 400, "emergency stop")), m.spans(), "a hold on at the end runs to the log's end");
+        assertEquals(List.of(101L), m.injectedTimes());
+        assertEquals(List.of(150L), m.heldBackTimes());
+        assertTrue(m.heldBack(program(1, Direction.CLIENT_TO_SERVER, 1008)));
+        assertFalse(m.heldBack(program(1, Direction.CLIENT_TO_SERVER, 960)), "the message before it went to Player");
+        assertFalse(m.heldBack(program(2, Direction.CLIENT_TO_SERVER, 1008)), "another connection");
+        assertFalse(m.heldBack(program(1, Direction.SERVER_TO_CLIENT, 1008)), "Player's stream is never held");
+        assertTrue(HoldMarks.none().isEmpty());
+    }
+
+    @Test
+    void aSpyLogsHoldEntriesReachTheSessionLog() throws Exception {
+        Path file = tmp.resolve("held.mcap");
+        try (SpyLogWriter w = SpyLogWriter.create(file, Map.of())) {
+            w.connectionOpened(1_000, 1, "127.0.0.1:40000", "127.0.0.1:6665", "127.0.0.1:7665");
+            w.hold(e(2_000, 0, Action.HOLD_ON, 0, "suspended in the debugger"));
+            w.hold(e(3_000, 0, Action.HOLD_OFF, 0, ""));
+            w.connectionClosed(4_000, 1, "done");
+        }
+        try (SessionLog log = SessionLogs.open(file)) {
+            List<HoldEntry> entries = log.holdEntries();
+            assertEquals(List.of(Action.HOLD_ON, Action.HOLD_OFF), entries.stream().map(HoldEntry::action).toList());
+            assertEquals(List.of(new HoldMarks.Span(2_000, 3_000, "suspended in the debugger")),
+                    new HoldMarks(entries, log.endNanos()).spans());
+        }
+    }
+}

@@ -1,0 +1,71 @@
+package org.stagecraft.scene;
+
+import java.util.EnumMap;
+import java.util.stream.Collectors;
+
+import org.stagecraft.spy.hold.HoldReason;
+import org.stagecraft.spy.hold.HoldState;
+import org.stagecraft.spy.hold.HoldStreams;
+import org.stagecraft.streams.DeliveryPolicy;
+import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamMessage;
+import org.stagecraft.streams.StreamPattern;
+import org.stagecraft.streams.Subscription;
+
+/**
+ * Whether the robots of a bus are held by their spy, for a view to say so on top of the robots: follows
+ * the {@link HoldStreams#STATE} stream, starting from the last state the bus carried (a view opened while
+ * the program is suspended shows "HELD" at once).
+ *
+ * <p>One state per bus: every session's spy publishes on the same key, so with two sessions on the
+ * workbench bus the newest change wins.
+ */
+public final class HoldStatus implements AutoCloseable {
+    private static final StreamPattern STATE = StreamPattern.exactly(HoldStreams.STATE);
+
+    private final Runnable onChange;
+    private volatile HoldState state;
+    private final Subscription subscription;
+
+    /** @param onChange told (on a bus thread) after each change, e.g. to request a redraw */
+    public HoldStatus(StreamBus bus, Runnable onChange) {
+        this.onChange = onChange;
+        LastMessages.find(bus).ifPresent(store -> store.matching(STATE).forEach(m -> state = stateOf(m)));
+        subscription = bus.subscribe(STATE, DeliveryPolicy.latestValue(), this::accept);
+    }
+
+    private void accept(StreamMessage m) {
+        HoldState s = stateOf(m);
+        if (s != null) {
+            state = s;
+            onChange.run();
+        }
+    }
+
+    private static HoldState stateOf(StreamMessage m) {
+        return m.payload() instanceof HoldState s ? s : null;
+    }
+
+    /** The newest state seen, or null if none. */
+    public HoldState state() {
+        return state;
+    }
+
+    /** What a view draws over the robots: "HELD (suspended in the debugger)", or null when nothing is held. */
+    public String overlayText() {
+        return overlayText(state);
+    }
+
+    public static String overlayText(HoldState s) {
+        if (s == null || !s.held()) {
+            return null;
+        }
+        return "HELD (" + new EnumMap<HoldReason, Integer>(s.reasons()).keySet().stream().map(HoldReason::text)
+                .collect(Collectors.joining(", ")) + ")";
+    }
+
+    @Override
+    public void close() {
+        subscription.close();
+    }
+}

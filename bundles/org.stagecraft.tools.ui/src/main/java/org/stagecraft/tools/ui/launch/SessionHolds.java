@@ -1,0 +1,119 @@
+package org.stagecraft.tools.ui.launch;
+
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+
+import org.eclipse.debug.core.ILaunch;
+import org.stagecraft.spy.hold.HoldListener;
+import org.stagecraft.spy.hold.HoldState;
+import org.stagecraft.spy.hold.RobotHold;
+import org.stagecraft.tools.process.ToolState;
+import org.stagecraft.tools.session.RobotSession;
+import org.stagecraft.tools.ui.view.ToolsModel;
+
+/**
+ * The robot hold of one running Robot Session in the IDE: the debugger's suspend holds (when the
+ * session's option is on), the emergency stop reaches it, and the Tools view's "Session" row says
+ * whether and why its robots are held.
+ *
+ * <p>For tests and other plug-ins: {@link #of(ILaunch)} finds it from the session's launch or from a
+ * launch linked to it (the robot program's PyDev launch), and {@link #hold()} is the spy's
+ * {@link RobotHold}.
+ */
+public final class SessionHolds implements AutoCloseable {
+    private static final Map<SessionParts, SessionHolds> RUNNING = new ConcurrentHashMap<>();
+
+    private final SessionParts parts;
+    private final RobotHold hold;
+    private final SuspendHold suspend;
+    private final HoldListener toToolsView = this::show;
+
+    private SessionHolds(SessionParts parts, RobotHold hold, SuspendHold suspend) {
+        this.parts = parts;
+        this.hold = hold;
+        this.suspend = suspend;
+    }
+
+    /** Wires a session that has just started (its spy exists). */
+    static SessionHolds attach(SessionParts parts, RobotSession session) {
+        RobotHold hold = session.holds();
+        SuspendHold suspend = session.config().spy().holdWhenSuspended()
+                ? new SuspendHold(hold, parts::launches).start()
+                : null;
+        SessionHolds h = new SessionHolds(parts, hold, suspend);
+        hold.addListener(h.toToolsView);
+        RUNNING.put(parts, h);
+        EmergencyStop.get().register(hold);
+        h.show(hold.state());
+        return h;
+    }
+
+    /** The holds of the session that {@code launch} belongs to (its own launch or a linked one), or null. */
+    public static SessionHolds of(ILaunch launch) {
+        for (SessionHolds h : RUNNING.values()) {
+            if (h.parts.launches().contains(launch)) {
+                return h;
+            }
+        }
+        return null;
+    }
+
+    /** Every running session's holds. */
+    public static List<SessionHolds> running() {
+        return List.copyOf(RUNNING.values());
+    }
+
+    public RobotHold hold() {
+        return hold;
+    }
+
+    public SessionParts parts() {
+        return parts;
+    }
+
+    /** The debugger listener, or null when the session's "hold while suspended" is off. */
+    public SuspendHold suspendHold() {
+        return suspend;
+    }
+
+    /** A launch was linked to the session: its threads may already be suspended. */
+    void linked(ILaunch launch) {
+        if (suspend != null) {
+            suspend.scan(launch);
+        }
+    }
+
+    /** The Tools view's session row: running, and whether the robots are held and why. */
+    private void show(HoldState s) {
+        ToolsModel.Row row = ToolsModel.get().find(parts.sessionName(), SessionParts.SESSION_PART);
+        if (row != null && row.state() != ToolState.READY) {
+            return; // failed or stopped: that is what the row must keep saying
+        }
+        ToolsModel.get().update(new ToolsModel.Row(parts.sessionName(), SessionParts.SESSION_PART, ToolState.READY, -1, 0,
+                null, detail(s)));
+    }
+
+    private static final String HELD = "held — ";
+
+    /** "running" and the hold's status line, e.g. "held — Robots held (suspended in the debugger): …". */
+    public static String detail(HoldState s) {
+        return (s.held() ? HELD : "running — ") + s.description();
+    }
+
+    /** Whether a Tools view row's detail is that of a session with held robots. */
+    public static boolean isHeldDetail(String detail) {
+        return detail != null && detail.startsWith(HELD);
+    }
+
+    /** The session ends: no more holds from the debugger or the emergency stop. */
+    @Override
+    public void close() {
+        RUNNING.remove(parts);
+        if (suspend != null) {
+            suspend.close();
+        }
+        hold.removeListener(toToolsView);
+        EmergencyStop.get().unregister(hold);
+    }
+}

@@ -1,0 +1,50 @@
+package org.stagecraft.tools.session;
+
+import java.time.Duration;
+import java.util.Objects;
+
+import org.stagecraft.spy.proxy.NetworkSpy;
+
+/**
+ * How a session's Network Spy treats robot programs (docs/debugging-robots.md).
+ *
+ * @param upstreamGrace      how long a program's connection waits for Player to accept
+ *                           ({@link NetworkSpy#upstreamGrace(Duration)})
+ * @param holdWhenSuspended  hold the robots while the program is suspended in the debugger
+ * @param watchdog           the silence watchdog's timeout, or null when it is off
+ */
+public record SpyOptions(Duration upstreamGrace, boolean holdWhenSuspended, Duration watchdog) {
+
+    /** The defaults of a new launch configuration: hold when suspended, no watchdog, the spy's grace. */
+    public static final SpyOptions DEFAULT = new SpyOptions(NetworkSpy.DEFAULT_UPSTREAM_GRACE, true, null);
+
+    public SpyOptions {
+        Objects.requireNonNull(upstreamGrace, "upstreamGrace");
+        if (upstreamGrace.isNegative()) {
+            throw new IllegalArgumentException("upstream grace " + upstreamGrace + " is negative");
+        }
+        // zero and negative mean "off", like RobotHold.setWatchdog; one spelling keeps equals meaningful
+        watchdog = watchdog == null || watchdog.isZero() || watchdog.isNegative() ? null : watchdog;
+    }
+
+    /**
+     * Whether the spy must make connections holdable. Any reason to hold enables holds, so the user's
+     * emergency stop can hold every connection of such a session; a session with neither option set
+     * keeps the plain byte copy, and an emergency stop cannot hold its programs' connections.
+     */
+    public boolean holdsEnabled() {
+        return holdWhenSuspended || watchdog != null;
+    }
+
+    public SpyOptions withUpstreamGrace(Duration grace) {
+        return new SpyOptions(grace, holdWhenSuspended, watchdog);
+    }
+
+    public SpyOptions withHoldWhenSuspended(boolean on) {
+        return new SpyOptions(upstreamGrace, on, watchdog);
+    }
+
+    public SpyOptions withWatchdog(Duration timeout) {
+        return new SpyOptions(upstreamGrace, holdWhenSuspended, timeout);
+    }
+}
