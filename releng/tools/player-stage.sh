@@ -356,7 +356,7 @@ cmd_tier() {
   say "running the real Player/Stage tier: ./mvnw ${args[*]} $*"
   local rc=0
   (cd "$root" && ./mvnw "${args[@]}" "$@") || rc=$?
-  local tests=0 failures=0 errors=0 skipped=0 f v
+  local tests=0 failures=0 errors=0 skipped=0 f v n
   shopt -s nullglob
   for f in "$reports"/TEST-*.xml; do
     for v in tests failures errors skipped; do
