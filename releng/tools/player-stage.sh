@@ -187,6 +187,31 @@ patch_swig_pybuffer() {
 }
 
 # ------------------------------------------------------------------------------------------- install
+# Player: unpack, build change 3, configure with build changes 1 and 2, compile, install (uses the
+# variables of cmd_install: prefix, py, jobs, WORK, LOG_DIR, PLAYER_SRC*).
+build_player() {
+  local psrc="$WORK/player-src" pbld="$WORK/player-build"
+  say "unpacking Player"
+  unpack "$PLAYER_SRC_KIND" "$PLAYER_SRC" "$psrc"
+  [ -f "$psrc/libplayercore/message.cc" ] || die "$PLAYER_SRC does not hold Player's source (no libplayercore/message.cc)"
+  patch_swig_pybuffer "$psrc"
+  say "applied build change 3 (SWIG PyBuffer line for Python 3)"
+  rm -rf "$pbld"; mkdir -p "$pbld"
+  step "configuring Player (C++14, Boost through FindBoost)" "$LOG_DIR/player-configure.log" \
+    cmake -S "$psrc" -B "$pbld" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_CXX_FLAGS=-std=gnu++14 -DBoost_NO_BOOST_CMAKE=ON -DUSE_BOOST_SIGNALS=OFF \
+      -DPYTHON_EXECUTABLE="$py" -DBUILD_PYTHONC_BINDINGS=ON
+  step "compiling Player (make -j$jobs, ~1-2 min on 2 cores)" "$LOG_DIR/player-make.log" make -C "$pbld" -j"$jobs"
+  step "installing Player" "$LOG_DIR/player-install.log" make -C "$pbld" install
+  [ -x "$prefix/bin/player" ] || die "Player's install did not produce $prefix/bin/player (see $LOG_DIR/player-install.log)"
+  # Player installs its examples as source only; keep the built C++ example clients too.
+  local ex="$prefix/share/player/examples/bin" e
+  mkdir -p "$ex"
+  for e in laserobstacleavoid randomwalk; do
+    [ -x "$pbld/examples/libplayerc++/$e" ] && cp "$pbld/examples/libplayerc++/$e" "$ex/"
+  done
+}
+
 cmd_install() {
   local prefix="" source="github" jobs="" deps=yes
   while [ $# -gt 0 ]; do
@@ -230,35 +255,26 @@ prefix=$prefix"
 
   [ "$deps" = yes ] && install_deps
 
-  # --- Player
-  local psrc="$WORK/player-src" pbld="$WORK/player-build"
-  say "unpacking Player"
-  unpack "$PLAYER_SRC_KIND" "$PLAYER_SRC" "$psrc"
-  [ -f "$psrc/libplayercore/message.cc" ] || die "$PLAYER_SRC does not hold Player's source (no libplayercore/message.cc)"
-  patch_swig_pybuffer "$psrc"
-  say "applied build change 3 (SWIG PyBuffer line for Python 3)"
-  rm -rf "$pbld"; mkdir -p "$pbld"
-  step "configuring Player (C++14, Boost through FindBoost)" "$LOG_DIR/player-configure.log" \
-    cmake -S "$psrc" -B "$pbld" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_CXX_FLAGS=-std=gnu++14 -DBoost_NO_BOOST_CMAKE=ON -DUSE_BOOST_SIGNALS=OFF \
-      -DPYTHON_EXECUTABLE="$py" -DBUILD_PYTHONC_BINDINGS=ON
-  step "compiling Player (make -j$jobs, ~1-2 min on 2 cores)" "$LOG_DIR/player-make.log" make -C "$pbld" -j"$jobs"
-  step "installing Player" "$LOG_DIR/player-install.log" make -C "$pbld" install
-  [ -x "$prefix/bin/player" ] || die "Player's install did not produce $prefix/bin/player (see $LOG_DIR/player-install.log)"
-  # Player installs its examples as source only; keep the built C++ example clients too.
-  local ex="$prefix/share/player/examples/bin" e
-  mkdir -p "$ex"
-  for e in laserobstacleavoid randomwalk; do
-    [ -x "$pbld/examples/libplayerc++/$e" ] && cp "$pbld/examples/libplayerc++/$e" "$ex/"
-  done
+  # --- Player (its own stamp: a failed Stage build does not cost a second Player build)
+  local pstamp="$prefix/.stagecraft-player.stamp" pwant
+  pwant="player-sha256=$psum
+patch-version=$PATCH_VERSION
+prefix=$prefix"
+  if [ -f "$pstamp" ] && [ "$(cat "$pstamp")" = "$pwant" ] && [ -x "$prefix/bin/player" ]; then
+    say "Player already built from this source (stamp $pstamp): reusing it"
+  else
+    rm -f "$pstamp"
+    build_player
+    echo "$pwant" >"$pstamp"
+  fi
 
   # --- Stage (against the Player just installed)
   local ssrc="$WORK/stage-src" sbld="$WORK/stage-build" pc
   say "unpacking Stage"
   unpack "$STAGE_SRC_KIND" "$STAGE_SRC" "$ssrc"
   [ -f "$ssrc/libstage/stage.hh" ] || die "$STAGE_SRC does not hold Stage's source (no libstage/stage.hh)"
-  pc="$(dirname "$(find "$prefix" -name playercore.pc -print -quit)")"
-  [ -n "$pc" ] && [ "$pc" != . ] || die "no playercore.pc under $prefix after installing Player"
+  pc="$(find "$prefix"/lib* -name playercore.pc -printf '%h\n' -quit 2>/dev/null)"
+  [ -n "$pc" ] || die "no playercore.pc under $prefix after installing Player"
   rm -rf "$sbld"; mkdir -p "$sbld"
   step "configuring Stage" "$LOG_DIR/stage-configure.log" \
     env PKG_CONFIG_PATH="$pc${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}" \
@@ -272,7 +288,7 @@ prefix=$prefix"
   write_env "$prefix"
   # check what a user will run
   local plugin
-  plugin="$(find "$prefix" -name 'stageplugin.so*' -print -quit)"
+  plugin="$(find "$prefix"/lib* -name 'stageplugin.so*' -print -quit 2>/dev/null)"
   [ -n "$plugin" ] || die "Stage's Player plugin (stageplugin.so) is not under $prefix (see $LOG_DIR/stage-make.log)"
   ( . "$prefix/env.sh" && command -v player >/dev/null ) || die "env.sh does not put player on the PATH"
   if ( . "$prefix/env.sh" && "$py" -c "import playerc" ) >"$LOG_DIR/python-check.log" 2>&1; then

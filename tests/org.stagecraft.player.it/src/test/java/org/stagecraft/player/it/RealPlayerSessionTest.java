@@ -189,17 +189,16 @@ class RealPlayerSessionTest {
         // the spy log: complete, the connections on the original port, the banner and decoded traffic
         SpyLog log = SpyLog.read(tmp.resolve("spy-logs/session.mcap"));
         assertFalse(log.recovered, "the spy log was closed properly");
-        assertEquals(3, log.connections.size(), "banner probe, drive.py... connections: " + log.connections);
+        assertEquals(2, log.connections.size(), "the banner check and drive.py through the spy (the direct one is not "
+                + "spied): " + log.connections);
         for (LogConnection c : log.connections) {
             assertEquals(port, c.port(), "programs connected to the original port");
             assertTrue(c.upstream().endsWith(":" + moved), "the spy relayed to Player's moved port: " + c.upstream());
         }
         assertEquals(0, log.decodeProblems, "every message decodes");
-        int driveConn = log.connections.get(2).conn();
+        int driveConn = log.connections.get(1).conn();
         assertTrue(log.states(driveConn).size() >= 10, "position2d data through the spy");
         assertTrue(log.of(driveConn).stream().anyMatch(m -> m.is(SpyLog.RANGER, 0, SpyLog.DATA, 1)), "sonar data");
-        assertTrue(log.of(driveConn).stream().anyMatch(m -> m.dir() == Direction.SERVER_TO_CLIENT && m.is(SpyLog.LASER, 0,
-                SpyLog.DATA, 1)) || true, "laser is not subscribed by drive.py");
     }
 
     @Test
@@ -364,7 +363,7 @@ class RealPlayerSessionTest {
         List<PlayerStage.Program> drivers = new ArrayList<>();
         for (int i = 0; i < 6; i++) {
             drivers.add(python("drive-" + i, PlayerStage.script("drive.py"), List.of("--port", String.valueOf(ports.get(i)),
-                    "--speed", "0.2", "--turn", String.valueOf(i % 2 == 0 ? 0.3 : -0.3), "--rounds", "150")));
+                    "--speed", "0.2", "--turn", String.valueOf(i % 2 == 0 ? 0.3 : -0.3), "--distance", "0.5", "--rounds", "20000")));
         }
         for (PlayerStage.Program d : drivers) {
             assertEquals(0, d.awaitExit(Duration.ofSeconds(120)), d.name + ": " + d.output());
@@ -380,7 +379,7 @@ class RealPlayerSessionTest {
             assertTrue(states.size() > 20, "robot " + i + " reported poses: " + states.size());
             Pose2d a = states.get(0).pos();
             Pose2d b = states.get(states.size() - 1).pos();
-            assertTrue(SpyLog.distance(a, b) > 0.2, "robot " + i + " moved: " + a + " -> " + b);
+            assertTrue(SpyLog.distance(a, b) > 0.4, "robot " + i + " moved: " + a + " -> " + b);
             double turned = SpyLog.angleDiff(b.pa(), a.pa());
             assertTrue(i % 2 == 0 ? turned > 0 : turned < 0, "robot " + i + " turned the way it was told: " + turned);
             starts.add(a);
