@@ -28,12 +28,17 @@ import org.stagecraft.spy.log.SpyLogReader;
  * commands, sonar and laser data).
  */
 final class SpyLog {
+    static final int PLAYER = 1;
     static final int POSITION2D = 4;
     static final int LASER = 6;
     static final int RANGER = 62;
     static final int DATA = 1;
     static final int CMD = 2;
+    static final int REQ = 3;
     static final int RESP_ACK = 4;
+    static final int SYNCH = 5;
+    /** The player interface's REQ DATA: one round of data, in PULL mode. */
+    static final int REQ_DATA = 4;
 
     /** One decoded message of the log. */
     record Msg(long timeNanos, int conn, int port, Direction dir, DecodedMessage decoded) {
