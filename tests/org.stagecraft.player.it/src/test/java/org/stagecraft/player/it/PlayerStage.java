@@ -150,6 +150,16 @@ final class PlayerStage {
         return true;
     }
 
+    /** An X display number no X server uses (no socket, no lock file), for a private Xvfb. */
+    static int freeDisplay() {
+        for (int n = 100 + (int) (ProcessHandle.current().pid() % 300); n < 1000; n++) {
+            if (!Files.exists(Path.of("/tmp/.X11-unix/X" + n)) && !Files.exists(Path.of("/tmp/.X" + n + "-lock"))) {
+                return n;
+            }
+        }
+        throw new AssertionError("no free X display number");
+    }
+
     /** Polls until {@code condition} holds or {@code within} passes. */
     static boolean await(Duration within, java.util.function.BooleanSupplier condition) throws InterruptedException {
         long end = System.nanoTime() + within.toNanos();

@@ -31,9 +31,11 @@ import org.stagecraft.player.msg.Position2d;
 import org.stagecraft.player.msg.Ranger;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.spy.log.LogConnection;
+import org.stagecraft.tools.process.Readiness;
 import org.stagecraft.tools.process.RestartPolicy;
 import org.stagecraft.tools.process.SupervisedTool;
 import org.stagecraft.tools.process.ToolListener;
+import org.stagecraft.tools.process.ToolSpec;
 import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.session.RobotSession;
 import org.stagecraft.tools.session.SessionConfig;
@@ -102,6 +104,10 @@ class RealPlayerSessionTest {
         ProcessHandle player = session.player().process();
         List<ProcessHandle> tree = new ArrayList<>(player.descendants().toList());
         tree.add(player);
+        for (SupervisedTool t : session.tools()) {
+            tree.addAll(t.process().descendants().toList());
+            tree.add(t.process());
+        }
         Map<Integer, Integer> ports = session.portMap();
         Path scratch = session.scratchDirectory();
         for (PlayerStage.Program p : programs) {
@@ -110,7 +116,10 @@ class RealPlayerSessionTest {
         programs.clear();
         session.close();
         for (ProcessHandle h : tree) {
-            assertFalse(h.isAlive(), "process " + h.pid() + " of Player's tree is gone");
+            assertFalse(h.isAlive(), "process " + h.pid() + " of Player's or a tool's tree is gone");
+        }
+        for (SupervisedTool t : session.tools()) {
+            assertEquals(ToolState.STOPPED, t.state(), "the session's tool " + t.name() + " is stopped");
         }
         assertEquals(ToolState.STOPPED, session.player().state());
         for (Map.Entry<Integer, Integer> e : ports.entrySet()) {
@@ -231,16 +240,30 @@ class RealPlayerSessionTest {
             path += SpyLog.distance(states.get(i - 1).pos(), states.get(i).pos());
         }
         assertTrue(path > 2.0, "the robot travelled " + path + " m from " + first);
+        System.out.println("laserobstacleavoid: " + cmds.size() + " commands, " + String.format("%.2f", path) + " m travelled");
         assertTrue(states.stream().allMatch(s -> s.stall() == 0), "and never ran into anything (stall stayed 0)");
     }
 
+    /**
+     * The Sentinel is a smooth controller written for a robot in real time. Headless Stage runs ~10-18x
+     * faster than real time, so each of its control rounds would see the world jump by a large angle and
+     * it hunts; so this test runs Stage as users watch it: with its window (pioneer-laser-sonar.cfg,
+     * usegui 1) on a private Xvfb display that the session starts as a user tool, in real time.
+     */
     @Test
     void laserSentinelTurnsOnTheSpotToTheNearestReturnAndStops() throws Exception {
         int port = PlayerStage.freePorts(1).get(0);
-        start(config(PlayerStage.worlds().resolve("pioneer-laser-sonar-headless.cfg"), port));
+        int display = PlayerStage.freeDisplay();
+        ToolSpec xvfb = ToolSpec.of("Xvfb", List.of("Xvfb", ":" + display, "-screen", "0", "640x480x24", "-nolisten", "tcp",
+                "-displayfd", "1")).withReadiness(Readiness.line("^" + display + "$"), Duration.ofSeconds(30));
+        Map<String, String> env = new HashMap<>(PlayerStage.env());
+        env.put("DISPLAY", ":" + display);
+        SessionConfig withWindow = config(PlayerStage.worlds().resolve("pioneer-laser-sonar.cfg"), port).withTools(List.of(xvfb));
+        start(withWindow.withPlayer(withWindow.playerCommand(), env));
+        assertEquals(ToolState.READY, session.tools().get(0).state(), "Xvfb started as the session's tool, before Player");
         PlayerStage.Program sentinel = python("laser_sentinel.py",
                 PlayerStage.pythonClient().resolve("examples/laser_sentinel.py"),
-                List.of("--host", "127.0.0.1", "--port", String.valueOf(port), "--rounds", "600"));
+                List.of("--host", "127.0.0.1", "--port", String.valueOf(port), "--rounds", "200"));
         assertEquals(0, sentinel.awaitExit(Duration.ofSeconds(180)), sentinel.output());
         assertTrue(sentinel.anyLine(l -> l.startsWith("laser sentinel: watching laser:0")), sentinel.output());
         closeAndCheckClean();
@@ -281,6 +304,8 @@ class RealPlayerSessionTest {
         assertTrue(nearest >= 0, "something is within 3 m in the last scan");
         double bearing = Math.toDegrees(scan.minAngle() + nearest * scan.resolution());
         assertTrue(Math.abs(bearing) <= 3.0, "the nearest return is (almost) straight ahead at the end: " + bearing + " deg");
+        System.out.println("laser sentinel: turned " + String.format("%.1f", turned) + " deg on the spot, nearest return at "
+                + String.format("%.1f", bearing) + " deg, " + String.format("%.2f", scan.ranges().get(nearest)) + " m");
     }
 
     @Test
