@@ -225,6 +225,8 @@ cmd_install() {
     esac
   done
   prefix="$(abs_path "${prefix:-$(default_prefix)}")"
+  [ "$source" = github ] || [ -d "$source" ] \
+    || die "--source $source is not a folder (give the folder holding the Player and Stage tarballs or source folders, or 'github')"
   jobs="${jobs:-$(nproc 2>/dev/null || echo 2)}"
   local t_start=$SECONDS
   mkdir -p "$prefix" || die "cannot create the prefix $prefix"
