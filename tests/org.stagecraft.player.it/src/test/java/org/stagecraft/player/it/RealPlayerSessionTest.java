@@ -220,7 +220,8 @@ class RealPlayerSessionTest {
         PlayerStage.Program avoid = new PlayerStage.Program("laserobstacleavoid",
                 List.of(example.toString(), "-h", "127.0.0.1", "-p", String.valueOf(port)), env, null);
         programs.add(avoid);
-        // one "speed:" line per control cycle (std::endl flushes); 400 cycles are 40 s of simulated time
+        // one "speed:" line per control cycle (std::endl flushes the pipe); headless Stage runs ahead of the
+        // example, so 400 cycles are far more than 40 s of simulated time
         assertTrue(PlayerStage.await(Duration.ofSeconds(120), () -> avoid.count(l -> l.startsWith("speed:")) >= 400
                 || !avoid.process.isAlive()), "laserobstacleavoid ran 400 control cycles: " + avoid.output());
         assertTrue(avoid.process.isAlive(), "laserobstacleavoid still runs: " + avoid.output());
