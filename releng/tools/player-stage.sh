@@ -110,9 +110,10 @@ locate_sources() {
   PLAYER_SRC=""; STAGE_SRC=""
   if [ "$src" = github ]; then
     command -v curl >/dev/null || command -v wget >/dev/null || die "--source github needs curl or wget"
-    local dl="$WORK/download"; mkdir -p "$dl"
-    download "$PLAYER_URL" "$dl/player-$PLAYER_COMMIT.tar.gz"
-    download "$STAGE_URL" "$dl/Stage-$STAGE_COMMIT.tar.gz"
+    # kept in the prefix: a re-run checks the same bytes, so the stamp matches and nothing is rebuilt
+    local dl="$PREFIX_DIR/downloads"; mkdir -p "$dl"
+    download "$PLAYER_URL" "$dl/player-$PLAYER_COMMIT.tar.gz" "player-$PLAYER_COMMIT/"
+    download "$STAGE_URL" "$dl/Stage-$STAGE_COMMIT.tar.gz" "Stage-$STAGE_COMMIT/"
     PLAYER_SRC="$dl/player-$PLAYER_COMMIT.tar.gz"; PLAYER_SRC_KIND=tarball
     STAGE_SRC="$dl/Stage-$STAGE_COMMIT.tar.gz"; STAGE_SRC_KIND=tarball
     return
@@ -120,8 +121,13 @@ locate_sources() {
   [ -d "$src" ] || die "--source $src is not a folder (give the folder holding the Player and Stage tarballs or source folders, or 'github')"
   src="$(cd "$src" && pwd)"
   shopt -s nullglob nocaseglob
-  for f in "$src"/player-*.tar.gz "$src"/player-*.tgz; do PLAYER_SRC="$f"; PLAYER_SRC_KIND=tarball; done
-  for f in "$src"/stage-*.tar.gz "$src"/stage-*.tgz; do STAGE_SRC="$f"; STAGE_SRC_KIND=tarball; done
+  local found
+  found=("$src"/player-*.tar.gz "$src"/player-*.tgz)
+  [ "${#found[@]}" -le 1 ] || die "more than one Player tarball in $src (${found[*]##*/}): keep one"
+  [ "${#found[@]}" = 0 ] || { PLAYER_SRC="${found[0]}"; PLAYER_SRC_KIND=tarball; }
+  found=("$src"/stage-*.tar.gz "$src"/stage-*.tgz)
+  [ "${#found[@]}" -le 1 ] || die "more than one Stage tarball in $src (${found[*]##*/}): keep one"
+  [ "${#found[@]}" = 0 ] || { STAGE_SRC="${found[0]}"; STAGE_SRC_KIND=tarball; }
   if [ -z "$PLAYER_SRC" ]; then
     for f in "$src"/player*/ "$src"; do
       [ -f "$f/libplayercore/message.cc" ] && { PLAYER_SRC="${f%/}"; PLAYER_SRC_KIND=dir; break; }
@@ -151,7 +157,7 @@ locate_sources() {
   fi
 }
 
-download() { # $1 url, $2 file
+download() { # $1 url, $2 file, $3 the top folder the archive must have (names the pinned commit)
   [ -s "$2" ] && return 0
   say "downloading $1"
   if command -v curl >/dev/null; then
@@ -159,6 +165,9 @@ download() { # $1 url, $2 file
   else
     wget -q -O "$2.part" "$1" || die "cannot download $1 (no internet? give --source DIR with the tarballs)"
   fi
+  local top
+  top="$(tar -tzf "$2.part" 2>/dev/null | head -1 || true)"
+  [ "$top" = "$3" ] || die "$1 is not the expected archive (its top folder is '$top', expected '$3'); kept as $2.part"
   mv "$2.part" "$2"
 }
 
@@ -230,7 +239,7 @@ cmd_install() {
   jobs="${jobs:-$(nproc 2>/dev/null || echo 2)}"
   local t_start=$SECONDS
   mkdir -p "$prefix" || die "cannot create the prefix $prefix"
-  WORK="$prefix/.build"; LOG_DIR="$prefix/logs"
+  PREFIX_DIR="$prefix"; WORK="$prefix/.build"; LOG_DIR="$prefix/logs"
   mkdir -p "$WORK" "$LOG_DIR"
   say "prefix: $prefix"
 
