@@ -56,6 +56,8 @@ final class SpyLog {
     final List<LogConnection> connections;
     final List<Msg> messages = new ArrayList<>();
     final long decodeProblems;
+    /** The ident each connection's server side began with, by connection. */
+    final Map<Integer, String> banners = new LinkedHashMap<>();
 
     private SpyLog(boolean recovered, List<LogConnection> connections, long problems) {
         this.recovered = recovered;
@@ -68,8 +70,12 @@ final class SpyLog {
         try (SpyLogReader r = SpyLogReader.open(file)) {
             List<Msg> msgs = new ArrayList<>();
             long problems = 0;
+            Map<Integer, String> banners = new LinkedHashMap<>();
             for (Iterator<LogEntry> it = r.entries(); it.hasNext();) {
-                if (it.next() instanceof LogEntry.Wire w && w.kind() == LogEntry.Kind.FRAME) {
+                LogEntry e = it.next();
+                if (e instanceof LogEntry.Wire w && w.kind() == LogEntry.Kind.BANNER && w.dir() == Direction.SERVER_TO_CLIENT) {
+                    banners.put(w.conn(), new String(w.bytes(), java.nio.charset.StandardCharsets.US_ASCII).replace("\0", ""));
+                } else if (e instanceof LogEntry.Wire w && w.kind() == LogEntry.Kind.FRAME) {
                     byte[] b = w.bytes();
                     MessageHeader h = MessageHeader.read(b, 0);
                     DecodedMessage d = decoder.decode(h, Arrays.copyOfRange(b, MessageHeader.SIZE, b.length));
@@ -81,6 +87,7 @@ final class SpyLog {
             }
             SpyLog log = new SpyLog(r.recovered(), r.connections(), problems);
             log.messages.addAll(msgs);
+            log.banners.putAll(banners);
             return log;
         }
     }
