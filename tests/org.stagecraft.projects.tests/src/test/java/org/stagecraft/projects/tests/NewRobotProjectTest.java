@@ -19,12 +19,14 @@ import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.debug.core.ILaunchConfiguration;
+import org.eclipse.debug.core.ILaunchConfigurationWorkingCopy;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.stagecraft.projects.ui.RobotProjects;
+import org.stagecraft.projects.ui.RobotSessionProjects;
 import org.stagecraft.projects.ui.layout.ProgramTemplate;
 import org.stagecraft.projects.ui.layout.PyDevProjectFile;
 import org.stagecraft.projects.ui.layout.RobotProjectLayout;
@@ -96,6 +98,21 @@ class NewRobotProjectTest {
         assertEquals(c.windowedLaunch(), RobotSessionShortcut.configurationFor(c.windowedCfg()));
         assertEquals(c.headlessLaunch(), RobotSessionShortcut.configurationFor(c.headlessCfg()));
         assertEquals(2, Projects.robotSessions().size());
+    }
+
+    /** What {@link RobotSessionProjects} would make a robot project: the project of a Robot Session's program. */
+    @Test
+    void theProjectOfARobotSessionsProgramIsFoundAndAPlainOneIsNotConfigured() throws Exception {
+        RobotProjects.Created c = RobotProjects.create(new RobotProjects.Spec("Launched", null, ProgramTemplate.LASER_SENTINEL), null);
+        assertEquals(c.project(), RobotSessionProjects.robotProject(c.windowedLaunch()));
+        ILaunchConfigurationWorkingCopy noProgram = c.headlessLaunch().getWorkingCopy();
+        noProgram.setAttribute(LaunchAttributes.PROGRAM, "");
+        assertEquals(c.project(), RobotSessionProjects.robotProject(noProgram), "the cfg's project when no program is set");
+        noProgram.setAttribute(LaunchAttributes.CFG, "/elsewhere/robot.cfg");
+        assertEquals(null, RobotSessionProjects.robotProject(noProgram), "nothing of the workspace: left alone");
+        assertEquals(null, RobotSessionProjects.robotProject(null), "a launch without a configuration");
+        assertEquals(RobotProjects.pyDevInstalled(), RobotSessionProjects.configured(c.project()),
+                "configured exactly when the wizard could make it a PyDev project");
     }
 
     private static void check(ILaunchConfiguration l, String name, String cfg, IFile cfgFile) throws CoreException {
