@@ -307,8 +307,8 @@ class RealStageHoldTest {
             boolean holdingWhileSuspended, double heldMs, double injectedMs, long resumeMovedMs) {
         String figures() {
             return String.format(Locale.ROOT, "suspend %s #%d: speed before %.3f m/s; SUSPEND -> zero CMD_VEL on the wire (spy log) %s; "
-                    + "SUSPEND -> hold listener %s; distance after SUSPEND until still %.3f m (still from %d ms); drift while suspended 3 s "
-                    + "%.4f m; moved in the 3 s %.3f m; moved 5 cm %d ms after RESUME", hold ? "with hold" : "WITHOUT hold", n, speedBefore,
+                    + "SUSPEND -> hold listener %s; moved from SUSPEND to the first pose after 200 ms %.3f m (at %d ms); then while suspended 3 s "
+                    + "%.4f m (the farthest from that pose); moved in the 3.2 s %.3f m; moved 5 cm %d ms after RESUME", hold ? "with hold" : "WITHOUT hold", n, speedBefore,
                     injectedMs < 0 ? "none" : String.format(Locale.ROOT, "%.2f ms", injectedMs),
                     heldMs < 0 ? "none" : String.format(Locale.ROOT, "%.2f ms", heldMs), toStill, stillFromMs, drift, moved3s, resumeMovedMs);
         }
