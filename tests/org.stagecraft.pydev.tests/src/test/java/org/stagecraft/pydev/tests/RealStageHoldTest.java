@@ -220,7 +220,10 @@ class RealStageHoldTest {
         }
         DebugPlugin.getDefault().getBreakpointManager().removeBreakpoints(
                 DebugPlugin.getDefault().getBreakpointManager().getBreakpoints(), true);
-        Display.getDefault().syncExec(() -> PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage().closeAllEditors(false));
+        Display.getDefault().syncExec(() -> {
+            var page = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+            page.closeAllEditors(false);
+        });
         project.delete(true, true, new NullProgressMonitor());
     }
 
@@ -345,6 +348,14 @@ class RealStageHoldTest {
                 double speed = poses.speed(arrival[0] - 1000 * MS, arrival[0]);
                 Stop stop = poses.stopFrom(arrival[0], 200 * MS, 3200 * MS);
                 double moved3s = Poses.dist(poses.at(arrival[0]), poses.at(arrival[0] + 3200 * MS));
+                if (hold && n == 1) {
+                    // the picture for docs/debugging-robots.md: suspended, robot held (after the measurement window)
+                    Path png = reportDir().resolve("screenshots/debugging-robots.png");
+                    int colours = WorkbenchShot.capture(project, png);
+                    assertTrue(colours > 50, "a real picture, not a blank screen: " + colours + " colours in " + png);
+                    assertTrue(holds.hold().isHeld(), "still held while the views opened");
+                    report("screenshot while suspended and held: " + png.toAbsolutePath());
+                }
                 thread.resume();
                 DebugEvent resume = events.await("resume #" + n, WAIT, e -> e.getSource() == thread && e.getKind() == DebugEvent.RESUME
                         && events.arrival(e)[0] > arrival[0]);
@@ -387,6 +398,11 @@ class RealStageHoldTest {
         try (SpyLogReader r = SpyLogReader.open(files.get(0))) {
             return r.holdEntries().stream().filter(e -> e.action() == HoldEntry.Action.INJECTED).toList();
         }
+    }
+
+    private static Path reportDir() {
+        String file = System.getProperty("stagecraft.holdReport");
+        return file == null || file.isBlank() || file.startsWith("${") ? Path.of("") : Path.of(file).toAbsolutePath().getParent();
     }
 
     private static void report(String line) {
