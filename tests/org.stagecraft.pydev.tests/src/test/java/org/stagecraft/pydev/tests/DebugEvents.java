@@ -13,6 +13,8 @@ import org.eclipse.debug.core.IDebugEventSetListener;
 /** Records the debug events the platform fires and lets a test wait for one (no polling, no sleeps). */
 final class DebugEvents implements IDebugEventSetListener, AutoCloseable {
     private final List<DebugEvent> seen = new ArrayList<>();
+    /** When each event reached this listener: System.nanoTime() and the wall clock in epoch nanoseconds. */
+    private final java.util.Map<DebugEvent, long[]> arrivals = new java.util.IdentityHashMap<>();
 
     DebugEvents() {
         DebugPlugin.getDefault().addDebugEventListener(this);
@@ -20,6 +22,11 @@ final class DebugEvents implements IDebugEventSetListener, AutoCloseable {
 
     @Override
     public synchronized void handleDebugEvents(DebugEvent[] events) {
+        long nano = System.nanoTime();
+        java.time.Instant now = java.time.Instant.now();
+        for (DebugEvent e : events) {
+            arrivals.put(e, new long[] {nano, now.getEpochSecond() * 1_000_000_000L + now.getNano()});
+        }
         seen.addAll(List.of(events));
         notifyAll();
     }
@@ -40,6 +47,11 @@ final class DebugEvents implements IDebugEventSetListener, AutoCloseable {
             }
             TimeUnit.NANOSECONDS.timedWait(this, left);
         }
+    }
+
+    /** When {@code e} arrived here: {System.nanoTime(), epoch nanoseconds}. */
+    synchronized long[] arrival(DebugEvent e) {
+        return arrivals.get(e).clone();
     }
 
     @Override

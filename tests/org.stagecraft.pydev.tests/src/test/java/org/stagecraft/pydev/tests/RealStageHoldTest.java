@@ -1,0 +1,781 @@
+package org.stagecraft.pydev.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.BufferedReader;
+import java.io.File;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IProject;
+import org.eclipse.core.resources.IResource;
+import org.eclipse.core.resources.ResourcesPlugin;
+import org.eclipse.core.runtime.NullProgressMonitor;
+import org.eclipse.core.runtime.preferences.IEclipsePreferences;
+import org.eclipse.core.runtime.preferences.InstanceScope;
+import org.eclipse.debug.core.DebugEvent;
+import org.eclipse.debug.core.DebugPlugin;
+import org.eclipse.debug.core.ILaunch;
+import org.eclipse.debug.core.ILaunchConfigurationWorkingCopy;
+import org.eclipse.debug.core.ILaunchManager;
+import org.eclipse.debug.core.model.IThread;
+import org.eclipse.jface.text.IDocument;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.ui.IEditorPart;
+import org.eclipse.ui.PlatformUI;
+import org.eclipse.ui.ide.IDE;
+import org.eclipse.ui.texteditor.ITextEditor;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.python.pydev.ast.interpreter_managers.InterpreterInfo;
+import org.python.pydev.ast.interpreter_managers.InterpreterManagersAPI;
+import org.python.pydev.ast.interpreter_managers.PythonInterpreterManager;
+import org.python.pydev.core.IInterpreterInfo;
+import org.python.pydev.core.IInterpreterManager;
+import org.python.pydev.core.IPythonNature;
+import org.python.pydev.debug.model.PyBreakpoint;
+import org.python.pydev.debug.ui.actions.PyBreakpointRulerAction;
+import org.python.pydev.plugin.nature.PythonNature;
+import org.python.pydev.plugin.preferences.PydevRootPrefs;
+import org.python.pydev.shared_core.structure.Tuple;
+import org.stagecraft.spy.hold.HoldListener;
+import org.stagecraft.spy.hold.HoldReason;
+import org.stagecraft.spy.hold.HoldState;
+import org.stagecraft.spy.log.HoldEntry;
+import org.stagecraft.spy.log.SpyLogReader;
+import org.stagecraft.tools.ui.launch.EmergencyStop;
+import org.stagecraft.tools.ui.launch.LaunchAttributes;
+import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
+import org.stagecraft.tools.ui.launch.SessionHolds;
+import org.stagecraft.tools.ui.launch.SessionParts;
+
+/**
+ * The debugger-safe robot against the real things (issue 19's "must show"): a Robot Session with the
+ * real PyDev (its debugger pydevd) and a real Player 3.1.1-dev + Stage 4.3.0, Stage with its window on
+ * a private Xvfb display so that it runs in real time ({@code speedup 1}). A robot program drives the
+ * Pioneer forward at 0.3 m/s; the test reads the robot's pose from Stage itself, through the
+ * {@code simulation} interface's GET_POSE2D request on a second connection straight to Player (not
+ * through the spy, and not by subscribing to position2d, which would zero the robot's speed when that
+ * client leaves; a suspended program reads nothing, so the spy log has no poses while suspended).
+ *
+ * <p>Runs only in the combined tier: with PyDev (the pydev-tier profile) and -Dstagecraft.playerStage
+ * naming a Player/Stage install (the module's real-stage profile includes this class then); and
+ * -Dstagecraft.python, a python3 with pint for the stagecraft_player client, which PyDev is configured with.
+ *
+ * <p>Times: the poses are stamped by the pose reader with {@code time.monotonic_ns()} (CLOCK_MONOTONIC,
+ * the clock of Java's {@code System.nanoTime()} on Linux), so they compare with the arrival of the
+ * debug events here. Figures go to the test output and to {@code target/hold-latency.txt}.
+ */
+@Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class RealStageHoldTest {
+    private static final Duration WAIT = Duration.ofSeconds(60);
+    private static final double SPEED = 0.3;
+    private static final long MS = 1_000_000L;
+    private static final String BREAK_MARK = "# the breakpoint's line";
+    /** The robot program: drives forward; every MARK_EVERY seconds of driving (MARKS times) it passes the marked line. */
+    private static final String ROBOT = """
+            import os, time
+            from stagecraft_player import Client
+
+            every = float(os.environ["MARK_EVERY"])
+            marks = int(os.environ["MARKS"])
+            silence = float(os.environ.get("SILENCE", "0"))
+            with Client("127.0.0.1", int(os.environ["ROBOT_PORT"])) as client:
+                robot = client.position2d("position2d:0")
+                robot.enable_motors(True)
+                last = time.monotonic()
+                done = 0
+                while True:
+                    client.read()
+                    robot.set_speed(%s, 0.0)
+                    if done < marks and time.monotonic() - last > every:
+                        done += 1  %s
+                        with open(os.environ["MARK"] + str(done), "w") as f:
+                            f.write("%%d\\n" %% time.monotonic_ns())
+                        if silence > 0:
+                            time.sleep(silence)  # silent: no command, no read
+                        last = time.monotonic()
+            """.formatted(SPEED, BREAK_MARK);
+    /** Reads r0's pose from Stage through Player's simulation interface, stamped with CLOCK_MONOTONIC. */
+    private static final String POSES = """
+            import sys, time
+            from stagecraft_player import Client
+            with Client("127.0.0.1", int(sys.argv[1])) as c:
+                sim = c.simulation(0)
+                print("READY", flush=True)
+                while True:
+                    p = sim.get_pose2d("r0")
+                    print("POSE %d %.5f %.5f %.5f" % (time.monotonic_ns(), p.px, p.py, p.pa), flush=True)
+                    time.sleep(0.01)  # sampling period (~20 Hz with Player's own turnaround); not a synchronisation
+            """;
+
+    private static final List<String> REPORT = new CopyOnWriteArrayList<>();
+    private static String python;
+    private static Map<String, String> playerEnv;
+
+    private final List<ILaunch> launches = new ArrayList<>();
+    private final List<Proc> procs = new ArrayList<>();
+    private Path tmp;
+    private IProject project;
+    private int display;
+
+    // ------------------------------------------------------------------------------------------ set-up
+
+    @BeforeAll
+    static void pyDevWithThePythonOfTheClientAndPlayerStage() throws Exception {
+        python = System.getProperty("stagecraft.python", "");
+        if (python.isBlank() || python.startsWith("${")) {
+            fail("-Dstagecraft.python (a python3 with pint, for the stagecraft_player client) is not set");
+        }
+        Process check = new ProcessBuilder(python, "-c", "import pint").redirectErrorStream(true).start();
+        String out = new String(check.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(check.waitFor(60, TimeUnit.SECONDS) && check.exitValue() == 0, python + " has no pint: " + out);
+        IEclipsePreferences pydevPrefs = InstanceScope.INSTANCE.getNode("org.python.pydev");
+        pydevPrefs.putBoolean(PydevRootPrefs.CHECK_PREFERRED_PYDEV_SETTINGS, false);
+        pydevPrefs.flush();
+        Tuple<InterpreterInfo, String> created = PythonInterpreterManager.doCreateInterpreterInfo(python, new NullProgressMonitor(), false);
+        assertNotNull(created, "PyDev made no interpreter info for " + python);
+        IInterpreterManager manager = InterpreterManagersAPI.getPythonInterpreterManager();
+        manager.setInfos(new IInterpreterInfo[] {created.o1}, Set.of(created.o1.getExecutableOrJar()), new NullProgressMonitor());
+        assertTrue(manager.isConfigured());
+        playerEnv = playerStageEnv();
+    }
+
+    @AfterAll
+    static void writeFigures() throws IOException {
+        String file = System.getProperty("stagecraft.holdReport");
+        Path out = file == null || file.isBlank() || file.startsWith("${") ? Path.of("hold-latency.txt") : Path.of(file);
+        Files.createDirectories(out.toAbsolutePath().getParent());
+        Files.writeString(out, "# RealStageHoldTest: robot holds with real PyDev + Player/Stage (Stage in real time), "
+                + java.time.Instant.now() + "\n" + String.join("\n", REPORT) + "\n",
+                StandardOpenOption.CREATE, StandardOpenOption.TRUNCATE_EXISTING);
+        System.out.println("RealStageHoldTest figures written to " + out.toAbsolutePath());
+    }
+
+    @BeforeEach
+    void setUp() throws Exception {
+        tmp = Files.createTempDirectory("stagecraft-realhold");
+        project = pyDevProjectWithWorlds("realhold-" + System.nanoTime());
+        display = freeDisplay();
+        Proc xvfb = start("Xvfb", List.of("Xvfb", ":" + display, "-screen", "0", "640x480x24", "-nolisten", "tcp", "-displayfd", "1"),
+                Map.of());
+        Await.until("Xvfb :" + display + " to be ready", WAIT, () -> xvfb.lines.contains(String.valueOf(display)), xvfb::output);
+    }
+
+    @AfterEach
+    void tearDown() throws Exception {
+        EmergencyStop.get().release();
+        List<ProcessHandle> players = new ArrayList<>();
+        List<Integer> ports = new ArrayList<>();
+        for (ILaunch l : launches) {
+            SessionParts parts = RobotSessionLaunchDelegate.partsOf(l);
+            if (parts != null) {
+                players.add(parts.session().player().process());
+                ports.addAll(parts.session().portMap().keySet());
+                ports.addAll(parts.session().portMap().values());
+            }
+            if (!l.isTerminated()) {
+                l.terminate();
+            }
+        }
+        for (ILaunch l : launches) {
+            Await.until("the session to end", WAIT, l::isTerminated, () -> "");
+            DebugPlugin.getDefault().getLaunchManager().removeLaunch(l);
+        }
+        for (int i = procs.size() - 1; i >= 0; i--) {
+            procs.get(i).close();
+        }
+        for (ProcessHandle h : players) {
+            Await.until("Player " + h.pid() + " to be gone", WAIT, () -> !h.isAlive(), () -> "");
+        }
+        for (int port : ports) {
+            Await.until("port " + port + " to be free again", WAIT, () -> isFree(port), () -> "");
+        }
+        DebugPlugin.getDefault().getBreakpointManager().removeBreakpoints(
+                DebugPlugin.getDefault().getBreakpointManager().getBreakpoints(), true);
+        Display.getDefault().syncExec(() -> {
+            var page = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+            page.closeAllEditors(false);
+        });
+        project.delete(true, true, new NullProgressMonitor());
+    }
+
+    // ------------------------------------------------------------------------------------------ the tests
+
+    @Test
+    void atABreakpointTheHeldRobotStopsWithin200msStaysStillAndDrivesOnAfterResume() throws Exception {
+        List<Suspension> runs = suspendAtBreakpoint(true, 3);
+        for (Suspension s : runs) {
+            assertTrue(s.speedBefore > 0.2, "the robot drove before the breakpoint: " + s);
+            assertTrue(s.toStill < 0.06, "the robot stopped within 200 ms of the SUSPEND event, less than 6 cm further: " + s);
+            assertTrue(s.drift < 0.01, "the held robot stayed within 1 cm for 3 s: " + s);
+            assertTrue(s.holdingWhileSuspended, "SuspendHold held the robots while suspended: " + s);
+            assertTrue(s.resumeMovedMs >= 0, "the robot moved again after resume: " + s);
+            assertTrue(s.injectedMs >= 0 && s.injectedMs < 200, "the zero CMD_VEL went to Player within 200 ms of the SUSPEND event: " + s);
+        }
+    }
+
+    @Test
+    void withTheHoldOffTheSuspendedProgramsRobotDrivesOn() throws Exception {
+        Suspension s = suspendAtBreakpoint(false, 1).get(0);
+        assertTrue(s.speedBefore > 0.2, "the robot drove before the breakpoint: " + s);
+        assertTrue(s.moved3s > 0.6, "without the hold the robot drove on at ~0.3 m/s while the program was suspended: " + s);
+        assertFalse(s.holdingWhileSuspended, "no hold: " + s);
+        assertTrue(s.injectedMs < 0, "nothing was injected: " + s);
+    }
+
+    @Test
+    void theEmergencyStopStopsTheRealRobotAndReleaseLetsItDriveOn() throws Exception {
+        Path mark = tmp.resolve("mark");
+        ILaunch launch = launch(config(true, false, 500, Map.of("MARK_EVERY", "2.0", "MARKS", "1", "MARK", mark.toString())),
+                ILaunchManager.RUN_MODE);
+        Poses poses = poses(launch);
+        HoldTimes times = holdTimes(launch);
+        long at = Long.parseLong(awaitFile(mark.resolveSibling("mark1")).trim());
+        poses.awaitSampleAfter(at + 500 * MS);
+        double speed = poses.speed(at - 1000 * MS, at);
+        long engaged = System.nanoTime();
+        EmergencyStop.get().engage();
+        long heldAt = times.awaitHeld(HoldReason.EMERGENCY_STOP);
+        poses.awaitSampleAfter(engaged + 3300 * MS);
+        Stop stop = poses.stopAfter(engaged);
+        assertTrue(SessionHolds.of(launch).hold().state().reasons().containsKey(HoldReason.EMERGENCY_STOP));
+        long released = System.nanoTime();
+        EmergencyStop.get().release();
+        long moved = poses.awaitMovedAfter(released, stop.still, 0.05);
+        String line = String.format(Locale.ROOT, "emergency stop: speed before %.3f m/s; engage -> held %.1f ms; %.3f m further after engage "
+                + "(pose still from %d ms); drift while held 3 s %.4f m; moved 5 cm %d ms after release", speed,
+                (heldAt - engaged) / 1e6, stop.toStill, stop.stillFromMs, stop.drift, (moved - released) / MS);
+        report(line);
+        assertTrue(speed > 0.2, line);
+        assertTrue(stop.toStill < 0.06, "stopped within 200 ms, less than 6 cm further: " + line);
+        assertTrue(stop.drift < 0.01, "still for 3 s: " + line);
+    }
+
+    @Test
+    void theSilenceWatchdogStopsTheRobotOfAProgramThatGoesSilentAndReleasesItWhenItSendsAgain() throws Exception {
+        Path mark = tmp.resolve("mark");
+        ILaunch launch = launch(config(true, true, 500, Map.of("MARK_EVERY", "2.0", "MARKS", "1", "MARK", mark.toString(),
+                "SILENCE", "5")), ILaunchManager.RUN_MODE);
+        Poses poses = poses(launch);
+        HoldTimes times = holdTimes(launch);
+        long silent = Long.parseLong(awaitFile(mark.resolveSibling("mark1")).trim());
+        long heldAt = times.awaitHeld(HoldReason.WATCHDOG);
+        poses.awaitSampleAfter(silent + 4500 * MS);
+        double speed = poses.speed(silent - 1000 * MS, silent);
+        // the watchdog fires between 500 and 625 ms after the last command; the robot must be still from 800 ms
+        Stop stop = poses.stopFrom(silent, 800 * MS, 3500 * MS);
+        long moved = poses.awaitMovedAfter(silent + 5000 * MS, stop.still, 0.05);
+        String line = String.format(Locale.ROOT, "watchdog 500 ms: speed before %.3f m/s; silent -> held %.1f ms; %.3f m from going silent "
+                + "to still; drift while held (0.8-4.3 s) %.4f m; moved again %d ms after the program's silence ended", speed,
+                (heldAt - silent) / 1e6, stop.toStill, stop.drift, (moved - silent) / MS - 5000);
+        report(line);
+        assertTrue(speed > 0.2, line);
+        assertTrue(heldAt - silent >= 400 * MS && heldAt - silent < 800 * MS, "held by the watchdog ~500 ms after the silence began: " + line);
+        assertTrue(stop.toStill < 0.3, "stopped, not driven on through the silence (driving on: 0.24 m at 0.8 s, 1.3 m at 4.3 s): " + line);
+        assertTrue(stop.drift < 0.01, "still while silent: " + line);
+    }
+
+    // ------------------------------------------------------------------------------------------ suspension
+
+    /** What one suspension at the breakpoint showed. */
+    record Suspension(boolean hold, int n, double speedBefore, double toStill, long stillFromMs, double drift, double moved3s,
+            boolean holdingWhileSuspended, double heldMs, double injectedMs, long resumeMovedMs) {
+        String figures() {
+            return String.format(Locale.ROOT, "suspend %s #%d: speed before %.3f m/s; SUSPEND -> zero CMD_VEL on the wire (spy log) %s; "
+                    + "SUSPEND -> hold listener %s; moved from SUSPEND to the first pose after 200 ms %.3f m (at %d ms); then while suspended 3 s "
+                    + "%.4f m (the farthest from that pose); moved in the 3.2 s %.3f m; moved 5 cm %d ms after RESUME", hold ? "with hold" : "WITHOUT hold", n, speedBefore,
+                    injectedMs < 0 ? "none" : String.format(Locale.ROOT, "%.2f ms", injectedMs),
+                    heldMs < 0 ? "none" : String.format(Locale.ROOT, "%.2f ms", heldMs), toStill, stillFromMs, drift, moved3s, resumeMovedMs);
+        }
+    }
+
+    private List<Suspension> suspendAtBreakpoint(boolean hold, int marks) throws Exception {
+        Path mark = tmp.resolve("mark");
+        IFile robot = write(project, "robot.py", ROBOT);
+        int line = lineOf(ROBOT, BREAK_MARK);
+        breakpointAsPyDevsRulerMakesIt(robot, line);
+        List<Suspension> out = new ArrayList<>();
+        List<long[]> suspendTimes = new ArrayList<>();
+        ILaunch launch;
+        try (DebugEvents events = new DebugEvents()) {
+            launch = launch(config(hold, false, 500, Map.of("MARK_EVERY", "2.5", "MARKS", String.valueOf(marks), "MARK", mark.toString())),
+                    ILaunchManager.DEBUG_MODE);
+            Poses poses = poses(launch);
+            HoldTimes times = holdTimes(launch);
+            SessionHolds holds = SessionHolds.of(launch);
+            assertEquals(hold, holds.hold().isEnabled(), "holds are enabled exactly when the option is on");
+            DebugEvent last = null;
+            for (int n = 1; n <= marks; n++) {
+                DebugEvent prev = last;
+                DebugEvent suspend = events.await("suspension #" + n + " at the breakpoint", WAIT, e -> e != prev
+                        && e.getKind() == DebugEvent.SUSPEND && e.getDetail() == DebugEvent.BREAKPOINT && e.getSource() instanceof IThread
+                        && (prev == null || events.arrival(e)[0] > events.arrival(prev)[0]));
+                last = suspend;
+                long[] arrival = events.arrival(suspend);
+                IThread thread = (IThread) suspend.getSource();
+                assertEquals(line, thread.getTopStackFrame().getLineNumber(), "suspended at the breakpoint's line");
+                poses.awaitSampleAfter(arrival[0] + 3300 * MS);
+                boolean holding = holds.suspendHold() != null && holds.suspendHold().isHolding() && holds.hold().isHeld();
+                long heldAt = times.firstHeldAfter(arrival[0] - 1000 * MS, HoldReason.SUSPENDED);
+                double speed = poses.speed(arrival[0] - 1000 * MS, arrival[0]);
+                Stop stop = poses.stopFrom(arrival[0], 200 * MS, 3200 * MS);
+                double moved3s = Poses.dist(poses.at(arrival[0]), poses.at(arrival[0] + 3200 * MS));
+                if (hold && n == 1) {
+                    // the picture for docs/debugging-robots.md: suspended, robot held (after the measurement window)
+                    Path png = reportDir().resolve("screenshots/debugging-robots.png");
+                    int colours = WorkbenchShot.capture(project, png);
+                    assertTrue(colours > 50, "a real picture, not a blank screen: " + colours + " colours in " + png);
+                    assertTrue(holds.hold().isHeld(), "still held while the views opened");
+                    report("screenshot while suspended and held: " + png.toAbsolutePath());
+                }
+                thread.resume();
+                DebugEvent resume = events.await("resume #" + n, WAIT, e -> e.getSource() == thread && e.getKind() == DebugEvent.RESUME
+                        && events.arrival(e)[0] > arrival[0]);
+                long resumed = events.arrival(resume)[0];
+                long moved = poses.awaitMovedAfter(resumed, poses.at(resumed), 0.05);
+                suspendTimes.add(arrival);
+                out.add(new Suspension(hold, n, speed, stop.toStill, stop.stillFromMs, stop.drift, moved3s, holding,
+                        heldAt < 0 ? -1 : (heldAt - arrival[0]) / 1e6, -1, (moved - resumed) / MS));
+            }
+            SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
+            launch.terminate();
+            Await.until("the session to end", WAIT, () -> launch.isTerminated() && parts.session().isClosed(), () -> "");
+        }
+        // the zero commands on the wire: the spy log's INJECTED entries (the spy's wall clock, epoch nanoseconds)
+        List<HoldEntry> injected = injectedEntries();
+        List<Suspension> withWire = new ArrayList<>();
+        for (int i = 0; i < out.size(); i++) {
+            Suspension s = out.get(i);
+            long epoch = suspendTimes.get(i)[1];
+            double ms = injected.stream().filter(e -> e.timeNanos() >= epoch - 1000 * MS && e.timeNanos() <= epoch + 3000 * MS)
+                    .mapToDouble(e -> (e.timeNanos() - epoch) / 1e6).findFirst().orElse(-1);
+            Suspension w = new Suspension(s.hold, s.n, s.speedBefore, s.toStill, s.stillFromMs, s.drift, s.moved3s, s.holdingWhileSuspended,
+                    s.heldMs, ms, s.resumeMovedMs);
+            report(w.figures());
+            withWire.add(w);
+        }
+        if (!hold) {
+            assertTrue(injected.isEmpty(), "the spy injected nothing with holds off: " + injected);
+        }
+        return withWire;
+    }
+
+    private List<HoldEntry> injectedEntries() throws IOException {
+        Path logs = project.getLocation().toPath().resolve("logs");
+        List<Path> files;
+        try (Stream<Path> s = Files.list(logs)) {
+            files = s.filter(p -> p.toString().endsWith(".mcap")).toList();
+        }
+        assertEquals(1, files.size(), "one spy log: " + files);
+        try (SpyLogReader r = SpyLogReader.open(files.get(0))) {
+            return r.holdEntries().stream().filter(e -> e.action() == HoldEntry.Action.INJECTED).toList();
+        }
+    }
+
+    private static Path reportDir() {
+        String file = System.getProperty("stagecraft.holdReport");
+        return file == null || file.isBlank() || file.startsWith("${") ? Path.of("") : Path.of(file).toAbsolutePath().getParent();
+    }
+
+    private static void report(String line) {
+        REPORT.add(line);
+        System.out.println("[hold figures] " + line);
+    }
+
+    // ------------------------------------------------------------------------------------------ poses
+
+    record Sample(long t, double x, double y) {
+    }
+
+    /** How the robot came to a stop: the distance until still, from when, and the drift afterwards. */
+    record Stop(double toStill, long stillFromMs, double drift, Sample still) {
+    }
+
+    /** r0's poses from Stage (the simulation interface), as the pose reader prints them. */
+    final class Poses {
+        final Proc proc;
+
+        Poses(Proc proc) {
+            this.proc = proc;
+        }
+
+        List<Sample> samples() {
+            List<Sample> out = new ArrayList<>();
+            for (String l : proc.lines) {
+                if (l.startsWith("POSE ")) {
+                    String[] f = l.split(" ");
+                    out.add(new Sample(Long.parseLong(f[1]), Double.parseDouble(f[2]), Double.parseDouble(f[3])));
+                }
+            }
+            return out;
+        }
+
+        void awaitSampleAfter(long t) {
+            Await.until("a pose sampled after " + t, WAIT, () -> {
+                List<Sample> s = samples();
+                return !s.isEmpty() && s.get(s.size() - 1).t() > t;
+            }, proc::output);
+        }
+
+        /** The newest sample taken at or before {@code t}. */
+        Sample at(long t) {
+            Sample best = null;
+            for (Sample s : samples()) {
+                if (s.t() <= t) {
+                    best = s;
+                }
+            }
+            if (best == null) {
+                fail("no pose sampled before " + t + ": " + proc.output());
+            }
+            return best;
+        }
+
+        double speed(long from, long to) {
+            Sample a = at(from);
+            Sample b = at(to);
+            return dist(a, b) / ((b.t() - a.t()) / 1e9);
+        }
+
+        /** From {@code t0}: the first sample at or after {@code t0 + still}, how far it is from the pose at t0, the drift until {@code t0 + until}. */
+        Stop stopFrom(long t0, long still, long until) {
+            Sample start = at(t0);
+            Sample first = samples().stream().filter(s -> s.t() >= t0 + still).findFirst().orElseThrow();
+            double drift = samples().stream().filter(s -> s.t() >= first.t() && s.t() <= t0 + until).mapToDouble(s -> dist(first, s))
+                    .max().orElse(0);
+            return new Stop(dist(start, first), (first.t() - t0) / MS, drift, first);
+        }
+
+        Stop stopAfter(long t0) {
+            return stopFrom(t0, 200 * MS, 3200 * MS);
+        }
+
+        /** When (the sample time) the robot was first {@code metres} away from {@code from}, after {@code t}; waits for it. */
+        long awaitMovedAfter(long t, Sample from, double metres) {
+            long[] when = {-1};
+            Await.until("the robot to move " + metres + " m from " + from, Duration.ofSeconds(15), () -> {
+                for (Sample s : samples()) {
+                    if (s.t() > t && dist(from, s) >= metres) {
+                        when[0] = s.t();
+                        return true;
+                    }
+                }
+                return false;
+            }, proc::output);
+            return when[0];
+        }
+
+        static double dist(Sample a, Sample b) {
+            return Math.hypot(a.x() - b.x(), a.y() - b.y());
+        }
+    }
+
+    private Poses poses(ILaunch launch) throws IOException {
+        SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
+        assertNotNull(parts, "the launch is a running Robot Session");
+        int moved = parts.session().portMap().values().iterator().next();
+        Path script = Files.writeString(tmp.resolve("poses.py"), POSES);
+        Map<String, String> env = new HashMap<>();
+        env.put("PYTHONPATH", clientFolder());
+        Proc p = start("poses", List.of(python, "-u", script.toString(), String.valueOf(moved)), env);
+        Poses poses = new Poses(p);
+        Await.until("the pose reader to read a pose from Player's simulation interface", WAIT,
+                () -> !poses.samples().isEmpty(), p::output);
+        return poses;
+    }
+
+    private static String clientFolder() {
+        return org.stagecraft.tools.ui.launch.PythonClientPath.folder()
+                .orElseThrow(() -> new AssertionError("the bundled stagecraft_player client is not found"));
+    }
+
+    // ------------------------------------------------------------------------------------------ hold times
+
+    /** When (System.nanoTime) the session's RobotHold reported each held state, from its HoldListener. */
+    static final class HoldTimes implements HoldListener {
+        final List<Object[]> changes = new CopyOnWriteArrayList<>();
+
+        @Override
+        public void holdChanged(HoldState state) {
+            changes.add(new Object[] {System.nanoTime(), state});
+        }
+
+        long firstHeldAfter(long t, HoldReason reason) {
+            for (Object[] c : changes) {
+                HoldState s = (HoldState) c[1];
+                if ((long) c[0] >= t && s.held() && s.reasons().containsKey(reason)) {
+                    return (long) c[0];
+                }
+            }
+            return -1;
+        }
+
+        long awaitHeld(HoldReason reason) {
+            Await.until("a hold with reason " + reason, WAIT, () -> firstHeldAfter(0, reason) >= 0, () -> changes.toString());
+            return firstHeldAfter(0, reason);
+        }
+    }
+
+    private static HoldTimes holdTimes(ILaunch launch) {
+        HoldTimes t = new HoldTimes();
+        SessionHolds.of(launch).hold().addListener(t);
+        return t;
+    }
+
+    // ------------------------------------------------------------------------------------------ the session
+
+    private ILaunchConfigurationWorkingCopy config(boolean holdWhenSuspended, boolean watchdog, int watchdogMillis,
+            Map<String, String> programEnv) throws Exception {
+        IFile robot = project.getFile("robot.py");
+        if (!robot.exists()) {
+            robot = write(project, "robot.py", ROBOT);
+        }
+        int port = freePort();
+        ILaunchManager lm = DebugPlugin.getDefault().getLaunchManager();
+        ILaunchConfigurationWorkingCopy wc = lm.getLaunchConfigurationType(LaunchAttributes.TYPE).newInstance(null,
+                lm.generateLaunchConfigurationName("realhold"));
+        wc.setAttribute(LaunchAttributes.CFG, project.getFile("worlds/pioneer-laser-sonar.cfg").getFullPath().toString());
+        wc.setAttribute(LaunchAttributes.PLAYER, playerStagePrefix().resolve("bin/player").toString());
+        Map<String, String> env = new HashMap<>(playerEnv);
+        env.put("DISPLAY", ":" + display);
+        wc.setAttribute(LaunchAttributes.PLAYER_ENVIRONMENT, env);
+        wc.setAttribute(LaunchAttributes.DEFAULT_PORT, port);
+        wc.setAttribute(LaunchAttributes.LOG_FOLDER, "logs");
+        wc.setAttribute(LaunchAttributes.TOOLS, List.<String>of());
+        wc.setAttribute(LaunchAttributes.PROGRAM, robot.getFullPath().toString());
+        wc.setAttribute(LaunchAttributes.HOLD_WHEN_SUSPENDED, holdWhenSuspended);
+        wc.setAttribute(LaunchAttributes.WATCHDOG, watchdog);
+        wc.setAttribute(LaunchAttributes.WATCHDOG_MILLIS, watchdogMillis);
+        Map<String, String> penv = new HashMap<>(programEnv);
+        penv.put("ROBOT_PORT", String.valueOf(port));
+        wc.setAttribute(ILaunchManager.ATTR_ENVIRONMENT_VARIABLES, penv);
+        return wc;
+    }
+
+    private ILaunch launch(ILaunchConfigurationWorkingCopy wc, String mode) throws Exception {
+        ILaunch l = wc.launch(mode, new NullProgressMonitor());
+        launches.add(l);
+        return l;
+    }
+
+    private String awaitFile(Path f) throws IOException {
+        Await.until("the robot program to write " + f, WAIT, () -> Files.exists(f), () -> launches.stream()
+                .flatMap(l -> Arrays.stream(l.getProcesses())).map(p -> p.getLabel() + ": " + p.getStreamsProxy()
+                        .getOutputStreamMonitor().getContents() + p.getStreamsProxy().getErrorStreamMonitor().getContents()).toList().toString());
+        return Files.readString(f);
+    }
+
+    private static int lineOf(String text, String marker) {
+        String[] lines = text.split("\n", -1);
+        for (int i = 0; i < lines.length; i++) {
+            if (lines[i].contains(marker)) {
+                return i + 1;
+            }
+        }
+        throw new AssertionError(marker);
+    }
+
+    private static void breakpointAsPyDevsRulerMakesIt(IFile file, int line) throws Exception {
+        Exception[] failure = {null};
+        Display.getDefault().syncExec(() -> {
+            try {
+                IEditorPart editor = IDE.openEditor(PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage(), file);
+                ITextEditor text = (ITextEditor) editor;
+                IDocument doc = text.getDocumentProvider().getDocument(text.getEditorInput());
+                PyBreakpointRulerAction.addBreakpointMarker(doc, line, text, PyBreakpoint.PY_BREAK_TYPE_PYTHON);
+            } catch (Exception e) {
+                failure[0] = e;
+            }
+        });
+        if (failure[0] != null) {
+            throw failure[0];
+        }
+        assertEquals(1, Arrays.stream(DebugPlugin.getDefault().getBreakpointManager().getBreakpoints())
+                .filter(b -> b.getMarker() != null && file.equals(b.getMarker().getResource())).count());
+    }
+
+    // ------------------------------------------------------------------------------------------ Player/Stage
+
+    private static Path playerStagePrefix() {
+        String p = System.getProperty("stagecraft.playerStage", "");
+        if (p.isBlank() || p.startsWith("${")) {
+            fail("-Dstagecraft.playerStage=PREFIX (a Player/Stage install) is not set: the combined tier needs it");
+        }
+        Path prefix = Path.of(p).toAbsolutePath();
+        assertTrue(Files.isRegularFile(prefix.resolve("env.sh")), prefix + "/env.sh: not a Player/Stage install");
+        assertTrue(Files.isExecutable(prefix.resolve("bin/player")), prefix + "/bin/player");
+        return prefix;
+    }
+
+    /** The variables the install's env.sh exports (as the real-Player tier reads them). */
+    private static Map<String, String> playerStageEnv() throws Exception {
+        Path sh = playerStagePrefix().resolve("env.sh");
+        ProcessBuilder pb = new ProcessBuilder("bash", "-c", ". \"$1\" && env -0", "env", sh.toString());
+        pb.environment().clear();
+        pb.environment().put("PATH", "/usr/local/bin:/usr/bin:/bin");
+        Process p = pb.redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(30, TimeUnit.SECONDS) && p.exitValue() == 0, "sourcing " + sh + ": " + out);
+        Map<String, String> keep = new HashMap<>();
+        for (String kv : out.split("\0")) {
+            int eq = kv.indexOf('=');
+            if (eq > 0 && List.of("PATH", "LD_LIBRARY_PATH", "PLAYERPATH", "STAGEPATH").contains(kv.substring(0, eq))) {
+                keep.put(kv.substring(0, eq), kv.substring(eq + 1));
+            }
+        }
+        keep.put("PATH", keep.get("PATH") + File.pathSeparator + System.getenv().getOrDefault("PATH", "/usr/bin:/bin"));
+        return keep;
+    }
+
+    /** A port free on every address (Player binds 0.0.0.0) and on loopback, for the spy; Player gets another. */
+    private static int freePort() throws IOException {
+        for (int tries = 0; tries < 200; tries++) {
+            int port;
+            try (ServerSocket s = new ServerSocket()) {
+                s.bind(new InetSocketAddress(InetAddress.getByName("0.0.0.0"), 0));
+                port = s.getLocalPort();
+            }
+            if (isFree(port)) {
+                return port;
+            }
+        }
+        throw new AssertionError("no free port");
+    }
+
+    private static boolean isFree(int port) {
+        for (String host : List.of("0.0.0.0", "127.0.0.1")) {
+            try (ServerSocket s = new ServerSocket()) {
+                s.setReuseAddress(true);
+                s.bind(new InetSocketAddress(InetAddress.getByName(host), port));
+            } catch (IOException e) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static int freeDisplay() {
+        for (int n = 100 + (int) (ProcessHandle.current().pid() % 300); n < 1000; n++) {
+            if (!Files.exists(Path.of("/tmp/.X11-unix/X" + n)) && !Files.exists(Path.of("/tmp/.X" + n + "-lock"))) {
+                return n;
+            }
+        }
+        throw new AssertionError("no free X display number");
+    }
+
+    // ------------------------------------------------------------------------------------------ processes
+
+    /** A process this test started (Xvfb, the pose reader), its output collected; close() ends its tree. */
+    static final class Proc implements AutoCloseable {
+        final Process process;
+        final List<String> lines = new CopyOnWriteArrayList<>();
+        private final Thread reader;
+
+        Proc(List<String> command, Map<String, String> env) throws IOException {
+            ProcessBuilder pb = new ProcessBuilder(command).redirectErrorStream(true);
+            pb.environment().putAll(env);
+            process = pb.start();
+            reader = Thread.ofVirtual().start(() -> {
+                try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
+                    String l;
+                    while ((l = r.readLine()) != null) {
+                        lines.add(l);
+                    }
+                } catch (IOException e) {
+                    lines.add("[test] " + e);
+                }
+            });
+        }
+
+        String output() {
+            List<String> l = List.copyOf(lines);
+            return "\n" + String.join("\n", l.subList(Math.max(0, l.size() - 20), l.size()));
+        }
+
+        @Override
+        public void close() throws InterruptedException {
+            List<ProcessHandle> tree = new ArrayList<>(process.descendants().toList());
+            tree.add(process.toHandle());
+            tree.forEach(ProcessHandle::destroy);
+            for (ProcessHandle h : tree) {
+                try {
+                    h.onExit().get(5, TimeUnit.SECONDS);
+                } catch (Exception e) {
+                    h.destroyForcibly();
+                }
+            }
+            process.waitFor(5, TimeUnit.SECONDS);
+            reader.join(Duration.ofSeconds(5));
+            assertFalse(process.isAlive(), "process " + process.pid() + " ended");
+        }
+    }
+
+    private Proc start(String name, List<String> command, Map<String, String> env) throws IOException {
+        Proc p = new Proc(command, env);
+        procs.add(p);
+        return p;
+    }
+
+    // ------------------------------------------------------------------------------------------ the project
+
+    private static IProject pyDevProjectWithWorlds(String name) throws Exception {
+        IProject p = ResourcesPlugin.getWorkspace().getRoot().getProject(name);
+        p.create(new NullProgressMonitor());
+        p.open(new NullProgressMonitor());
+        String prop = System.getProperty("stagecraft.traces");
+        assertTrue(prop != null && Files.isDirectory(Path.of(prop)), "-Dstagecraft.traces: " + prop);
+        Path from = Path.of(prop).resolve("worlds");
+        Path to = p.getLocation().toPath().resolve("worlds");
+        try (Stream<Path> files = Files.walk(from)) {
+            for (Path f : (Iterable<Path>) files::iterator) {
+                Path dest = to.resolve(from.relativize(f).toString());
+                if (Files.isDirectory(f)) {
+                    Files.createDirectories(dest);
+                } else {
+                    Files.copy(f, dest);
+                }
+            }
+        }
+        Files.createDirectories(p.getLocation().toPath().resolve("logs"));
+        p.refreshLocal(IResource.DEPTH_INFINITE, new NullProgressMonitor());
+        PythonNature.addNature(p, new NullProgressMonitor(), IPythonNature.Versions.PYTHON_VERSION_LATEST, "/" + name, null,
+                IPythonNature.DEFAULT_INTERPRETER, null);
+        return p;
+    }
+
+    private static IFile write(IProject p, String path, String text) throws Exception {
+        Path file = p.getLocation().toPath().resolve(path);
+        Files.createDirectories(file.getParent());
+        Files.writeString(file, text);
+        p.refreshLocal(IResource.DEPTH_INFINITE, new NullProgressMonitor());
+        return p.getFile(path);
+    }
+}
