@@ -91,10 +91,19 @@ final class DemoRun {
                 fail("the Robot Session '" + config.getName() + "' ended as soon as it started", null);
                 return Status.OK_STATUS;
             }
-            reports.listen(parts, RecordedPrograms.ROBOT_TOOL, RobotSession.PLAYER_TOOL_NAME);
+            reports.listen(parts, RobotSession.PLAYER_TOOL_NAME, player.recorded()
+                    ? new String[] {RecordedPrograms.ROBOT_TOOL, RobotSession.PLAYER_TOOL_NAME} : new String[0]);
+            // Player gone for good (crashed, killed): the session failed, and so did the demo
+            parts.session().failed().thenAccept(reason -> {
+                if (!PlatformUI.getWorkbench().isClosing()) {
+                    fail("the Robot Session '" + config.getName() + "' failed: " + reason, null);
+                }
+            });
             spyLog = parts.session().config().log();
             status.put("spyLog", spyLog == null ? null : spyLog.toString());
-            status.put("phase", "running");
+            if (!failed) {
+                status.put("phase", "running");
+            }
             DemoLog.info("Robot Session '" + config.getName() + "' runs; spy log " + spyLog);
             IFolder logs = project.getFolder(DemoProject.LOG_FOLDER);
             logs.refreshLocal(IResource.DEPTH_ONE, monitor);
@@ -127,15 +136,27 @@ final class DemoRun {
             return;
         }
         status.put("reports", reports.lines());
+        status.put("playerConsole", reports.console());
         status.sample(views, spyLog);
+        if (failed) {
+            return; // the failure's sample is taken; the workbench closes or shows the error
+        }
         display.timerExec(SAMPLE_MILLIS, this::sampleEverySecond);
     }
 
-    private void fail(String message, Throwable cause) {
+    private synchronized void fail(String message, Throwable cause) {
+        if (failed) {
+            return;
+        }
         failed = true;
         DemoLog.error(message, cause);
         status.put("error", message);
         status.put("phase", "failed");
+        // one last sample: the parts' states (the Tools view's rows) and Player's console at the failure
+        display.asyncExec(() -> {
+            status.put("playerConsole", reports.console());
+            status.sample(views, spyLog);
+        });
         if (options.exitAfterSeconds() > 0) {
             display.asyncExec(() -> PlatformUI.getWorkbench().close());
         } else {
@@ -149,6 +170,7 @@ final class DemoRun {
         }
         if (!failed) {
             status.put("reports", reports.lines());
+            status.put("playerConsole", reports.console());
             status.finish(views, spyLog);
         }
         DemoLog.info("closing the workbench after " + options.exitAfterSeconds() + " s (--exit-after)");
