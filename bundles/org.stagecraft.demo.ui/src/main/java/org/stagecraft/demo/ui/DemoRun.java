@@ -1,7 +1,10 @@
 package org.stagecraft.demo.ui;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 
 import org.eclipse.core.resources.IFile;
@@ -15,7 +18,9 @@ import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.jobs.Job;
 import org.eclipse.debug.core.ILaunch;
+import org.eclipse.debug.core.DebugException;
 import org.eclipse.debug.core.ILaunchConfiguration;
+import org.eclipse.debug.core.model.IProcess;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.ui.IWorkbenchWindow;
@@ -44,6 +49,7 @@ final class DemoRun {
     private final DemoStatus status;
     private volatile List<RobotView> views = List.of();
     private volatile Path spyLog;
+    private volatile ILaunch launch;
     private volatile boolean failed;
     private final PartReports reports = new PartReports();
 
@@ -86,6 +92,7 @@ final class DemoRun {
             display.syncExec(this::openViews);
             status.put("phase", "launching");
             ILaunch launch = DemoLaunch.launch(config, monitor);
+            this.launch = launch;
             SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
             if (parts == null || parts.session() == null) {
                 fail("the Robot Session '" + config.getName() + "' ended as soon as it started", null);
@@ -123,6 +130,29 @@ final class DemoRun {
         return Status.OK_STATUS;
     }
 
+    /** The launch's processes (the session's parts and the robot program): label, and exit value once ended. */
+    private List<Map<String, Object>> processes() {
+        ILaunch l = launch;
+        List<Map<String, Object>> out = new ArrayList<>();
+        if (l == null) {
+            return out;
+        }
+        for (IProcess p : l.getProcesses()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("label", p.getLabel());
+            m.put("terminated", p.isTerminated());
+            if (p.isTerminated()) {
+                try {
+                    m.put("exitValue", p.getExitValue());
+                } catch (DebugException e) {
+                    m.put("exitValue", null);
+                }
+            }
+            out.add(m);
+        }
+        return out;
+    }
+
     private void openViews() {
         try {
             views = DemoViews.open(window());
@@ -137,6 +167,7 @@ final class DemoRun {
         }
         status.put("reports", reports.lines());
         status.put("playerConsole", reports.console());
+        status.put("processes", processes());
         status.sample(views, spyLog);
         if (failed) {
             return; // the failure's sample is taken; the workbench closes or shows the error
@@ -155,6 +186,7 @@ final class DemoRun {
         // one last sample: the parts' states (the Tools view's rows) and Player's console at the failure
         display.asyncExec(() -> {
             status.put("playerConsole", reports.console());
+            status.put("processes", processes());
             status.sample(views, spyLog);
         });
         if (options.exitAfterSeconds() > 0) {
@@ -171,6 +203,7 @@ final class DemoRun {
         if (!failed) {
             status.put("reports", reports.lines());
             status.put("playerConsole", reports.console());
+            status.put("processes", processes());
             status.finish(views, spyLog);
         }
         DemoLog.info("closing the workbench after " + options.exitAfterSeconds() + " s (--exit-after)");

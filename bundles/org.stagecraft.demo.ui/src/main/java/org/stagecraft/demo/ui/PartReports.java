@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.eclipse.debug.core.model.IProcess;
+import org.eclipse.debug.core.model.IStreamMonitor;
 import org.eclipse.debug.core.model.IStreamsProxy;
 import org.stagecraft.tools.ui.launch.SessionParts;
 
@@ -31,13 +32,28 @@ final class PartReports {
         for (String name : partNames) {
             IStreamsProxy streams = streams(parts, name);
             if (streams != null) {
-                streams.getOutputStreamMonitor().addListener((text, monitor) -> add(name, text));
+                follow(streams.getOutputStreamMonitor(), text -> add(name, text));
             }
         }
         IStreamsProxy console = streams(parts, consolePart);
         if (console != null) {
-            console.getOutputStreamMonitor().addListener((text, monitor) -> console(text, ""));
-            console.getErrorStreamMonitor().addListener((text, monitor) -> console(text, STDERR_MARK));
+            follow(console.getOutputStreamMonitor(), text -> console(text, ""));
+            follow(console.getErrorStreamMonitor(), text -> console(text, STDERR_MARK));
+        }
+    }
+
+    /**
+     * What the part printed before we looked (its banner, for one: the session started it before the
+     * demo gets its parts), then everything it prints; a stream monitor that appends under its own
+     * lock (as the session's do) cannot slip a piece in between.
+     */
+    private static void follow(IStreamMonitor monitor, java.util.function.Consumer<String> to) {
+        synchronized (monitor) {
+            String before = monitor.getContents();
+            if (before != null && !before.isEmpty()) {
+                to.accept(before);
+            }
+            monitor.addListener((text, m) -> to.accept(text));
         }
     }
 
