@@ -32,7 +32,9 @@ import org.stagecraft.demo.recorded.TimedConnection;
 import org.stagecraft.demo.recorded.TimedRecording;
 import org.stagecraft.tools.session.RobotSession;
 import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
+import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.ui.launch.SessionParts;
+import org.stagecraft.tools.ui.view.ToolsModel;
 import org.stagecraft.views.RobotView;
 
 /**
@@ -101,15 +103,20 @@ final class DemoRun {
             reports.listen(parts, RobotSession.PLAYER_TOOL_NAME, player.recorded()
                     ? new String[] {RecordedPrograms.ROBOT_TOOL, RobotSession.PLAYER_TOOL_NAME} : new String[0]);
             // Player gone for good (crashed, killed): the session failed, and so did the demo
-            parts.session().failed().thenAccept(reason -> {
+            // (async: the session's own handler, which marks it FAILED in the Tools view, runs on the
+            // completing thread, possibly after ours; the status should show what the view shows)
+            parts.session().failed().thenAcceptAsync(reason -> {
+                awaitFailedInToolsView(parts);
                 if (!PlatformUI.getWorkbench().isClosing()) {
                     fail("the Robot Session '" + config.getName() + "' failed: " + reason, null);
                 }
             });
             spyLog = parts.session().config().log();
             status.put("spyLog", spyLog == null ? null : spyLog.toString());
-            if (!failed) {
-                status.put("phase", "running");
+            synchronized (this) {
+                if (!failed) {
+                    status.put("phase", "running");
+                }
             }
             DemoLog.info("Robot Session '" + config.getName() + "' runs; spy log " + spyLog);
             IFolder logs = project.getFolder(DemoProject.LOG_FOLDER);
@@ -128,6 +135,21 @@ final class DemoRun {
             fail(e.toString(), e);
         }
         return Status.OK_STATUS;
+    }
+
+    /** Waits (at most 5 s) until the session's own failure handler has marked it FAILED in the Tools view. */
+    private static void awaitFailedInToolsView(SessionParts parts) {
+        long end = System.nanoTime() + 5_000_000_000L;
+        while (System.nanoTime() < end && !(parts.failure() != null && ToolsModel.get().rows().stream()
+                .anyMatch(r -> r.session().equals(parts.sessionName()) && r.part().equals(SessionParts.SESSION_PART)
+                        && r.state() == ToolState.FAILED))) {
+            try {
+                Thread.sleep(20);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+        }
     }
 
     /** The launch's processes (the session's parts and the robot program): label, and exit value once ended. */

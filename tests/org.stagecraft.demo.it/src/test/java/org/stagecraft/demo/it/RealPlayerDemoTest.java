@@ -109,6 +109,67 @@ class RealPlayerDemoTest {
         assertPortFree("after the demo");
     }
 
+    @Test
+    void playerKilledUnderTheDemoFailsTheSessionAndTheDemoAtOnce() throws Exception {
+        Path player = prefix().resolve("bin/player");
+        Path target = Files.createDirectories(Path.of("target", "demo-it-real").toAbsolutePath());
+        Path workspace = target.resolve("workspace-killed");
+        Path status = target.resolve("status-killed.json");
+        Files.deleteIfExists(status);
+        int limit = 240;
+        DemoRun.Started started = DemoRun.start(workspace, status, "--exit-after", String.valueOf(limit), "--player",
+                player.toString());
+        // wait (polling the status the demo rewrites every second) until the session runs and Player has a pid
+        long pid = -1;
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(180);
+        while (pid <= 0 && System.nanoTime() < deadline && started.process().isAlive()) {
+            pid = playerPid(status);
+            if (pid <= 0) {
+                Thread.sleep(200); // polling interval, not synchronisation: the loop waits for the state itself
+            }
+        }
+        assertTrue(pid > 0, "the demo's session ran with a Player pid in the status: "
+                + (Files.exists(status) ? Files.readString(status) : "no status"));
+        long killedAt = System.nanoTime();
+        ProcessHandle handle = ProcessHandle.of(pid).orElseThrow(() -> new AssertionError("Player is not running"));
+        assertTrue(handle.info().command().orElse("").endsWith("/bin/player"), "the pid is Player's: " + handle.info());
+        Process kill = new ProcessBuilder("kill", "-9", String.valueOf(pid)).inheritIO().start();
+        assertEquals(0, kill.waitFor(), "kill -9 " + pid);
+
+        DemoRun run = started.await(limit + 120);
+        double afterKill = (System.nanoTime() - killedAt) / 1e9;
+        assertEquals(0, run.exitCode(), run.output());
+        assertTrue(afterKill < 60, "the demo ended soon after Player was killed, not at --exit-after: " + afterKill + " s");
+        JsonObject s = run.status();
+        assertEquals("failed", s.get("phase").getAsString(), s.toString());
+        String error = s.get("error").getAsString();
+        assertTrue(error.startsWith("the Robot Session 'Pioneer demo' failed: Player is gone")
+                && error.contains("signal 9"), error);
+        assertTrue(run.output().contains("stagecraft demo: ERROR " + error), run.output());
+        // the Tools view's rows, as the status took them after the failure
+        for (String part : List.of("Player", "Session")) {
+            assertTrue(s.getAsJsonArray("tools").asList().stream().map(JsonElement::getAsJsonObject)
+                    .anyMatch(t -> t.get("part").getAsString().equals(part) && t.get("state").getAsString().equals("FAILED")),
+                    part + " FAILED in the Tools view: " + s.get("tools"));
+        }
+        assertPortFree("after the failed demo");
+    }
+
+    private static long playerPid(Path status) {
+        try {
+            JsonObject s = JsonParser.parseString(Files.readString(status)).getAsJsonObject();
+            if (!s.has("tools") || !"running".equals(s.get("phase").getAsString())) {
+                return -1;
+            }
+            return s.getAsJsonArray("tools").asList().stream().map(JsonElement::getAsJsonObject)
+                    .filter(t -> t.get("part").getAsString().equals("Player") && t.has("pid")
+                            && t.get("state").getAsString().equals("READY"))
+                    .mapToLong(t -> t.get("pid").getAsLong()).findFirst().orElse(-1);
+        } catch (IOException | RuntimeException e) {
+            return -1; // not written yet
+        }
+    }
+
     private static Path prefix() {
         String p = System.getProperty("stagecraft.playerStage");
         if (p == null || p.isBlank() || p.startsWith("${")) {
