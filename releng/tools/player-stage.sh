@@ -5,7 +5,8 @@
 #   player-stage.sh install [--prefix DIR] [--source DIR|github] [--jobs N] [--no-deps]
 #   player-stage.sh env [--prefix DIR]        print the prefix's env.sh path (exit 1 if not installed)
 #   player-stage.sh tier [--python PY] [maven args...]
-#                  the real-Player test tier (tests/org.stagecraft.player.it), run by ./stagecraft test:
+#                  the real-Player test tier (tests/org.stagecraft.player.it and the real-Player demo test of
+#                  tests/org.stagecraft.demo.it), run by ./stagecraft test:
 #                  builds (or reuses) Player/Stage from ../shared/third-party into the checkout's
 #                  .player-stage/ (or uses $STAGECRAFT_PLAYER_STAGE if it holds an install), runs the tier
 #                  with Maven and prints its test count; says plainly when it cannot run, and why
@@ -375,24 +376,26 @@ cmd_tier() {
     echo "stagecraft: real Player/Stage tier NOT run: $reason" >&2
     return 0
   fi
-  local module="$root/tests/org.stagecraft.player.it" reports t0=$SECONDS
-  reports="$module/target/surefire-reports"
-  rm -rf "$reports"
-  local args=(-B -ntp verify -pl tests/org.stagecraft.player.it "-Dstagecraft.playerStage=$prefix")
+  # the tier: tests/org.stagecraft.player.it, and the demo with the real Player (tests/org.stagecraft.demo.it,
+  # whose profile real-player runs only RealPlayerDemoTest; ./stagecraft demo builds the product if it is missing)
+  local reports="$root/tests/org.stagecraft.player.it/target/surefire-reports" t0=$SECONDS
+  local demo_reports="$root/tests/org.stagecraft.demo.it/target/surefire-reports"
+  rm -rf "$reports" "$demo_reports"
+  local args=(-B -ntp verify -pl tests/org.stagecraft.player.it,tests/org.stagecraft.demo.it "-Dstagecraft.playerStage=$prefix")
   [ -z "$python" ] || args+=("-Dstagecraft.python=$python")
   say "running the real Player/Stage tier: ./mvnw ${args[*]} $*"
   local rc=0
   (cd "$root" && ./mvnw "${args[@]}" "$@") || rc=$?
   local tests=0 failures=0 errors=0 skipped=0 f v n
   shopt -s nullglob
-  for f in "$reports"/TEST-*.xml; do
+  for f in "$reports"/TEST-*.xml "$demo_reports"/TEST-*.xml; do
     for v in tests failures errors skipped; do
       n=$(sed -n "s/.*<testsuite[^>]* $v=\"\([0-9]*\)\".*/\1/p" "$f" | head -1)
       eval "$v=\$(( $v + ${n:-0} ))"
     done
   done
   shopt -u nullglob
-  echo "stagecraft: real Player/Stage tier: $tests tests, $failures failures, $errors errors, $skipped skipped ($((SECONDS - t0)) s; reports in $reports)" >&2
+  echo "stagecraft: real Player/Stage tier: $tests tests, $failures failures, $errors errors, $skipped skipped ($((SECONDS - t0)) s; reports in $reports and $demo_reports)" >&2
   [ "$rc" = 0 ] || die "the real Player/Stage tier failed (Maven exit code $rc)"
   [ "$tests" -gt 0 ] || die "the real Player/Stage tier ran no test"
   [ "$skipped" = 0 ] || die "the real Player/Stage tier skipped $skipped tests: a skipped test does not pass"

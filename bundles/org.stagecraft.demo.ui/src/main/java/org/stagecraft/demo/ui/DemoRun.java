@@ -1,7 +1,10 @@
 package org.stagecraft.demo.ui;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 
 import org.eclipse.core.resources.IFile;
@@ -15,7 +18,9 @@ import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.jobs.Job;
 import org.eclipse.debug.core.ILaunch;
+import org.eclipse.debug.core.DebugException;
 import org.eclipse.debug.core.ILaunchConfiguration;
+import org.eclipse.debug.core.model.IProcess;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.ui.IWorkbenchWindow;
@@ -27,7 +32,9 @@ import org.stagecraft.demo.recorded.TimedConnection;
 import org.stagecraft.demo.recorded.TimedRecording;
 import org.stagecraft.tools.session.RobotSession;
 import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
+import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.ui.launch.SessionParts;
+import org.stagecraft.tools.ui.view.ToolsModel;
 import org.stagecraft.views.RobotView;
 
 /**
@@ -44,6 +51,7 @@ final class DemoRun {
     private final DemoStatus status;
     private volatile List<RobotView> views = List.of();
     private volatile Path spyLog;
+    private volatile ILaunch launch;
     private volatile boolean failed;
     private final PartReports reports = new PartReports();
 
@@ -86,15 +94,30 @@ final class DemoRun {
             display.syncExec(this::openViews);
             status.put("phase", "launching");
             ILaunch launch = DemoLaunch.launch(config, monitor);
+            this.launch = launch;
             SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
             if (parts == null || parts.session() == null) {
                 fail("the Robot Session '" + config.getName() + "' ended as soon as it started", null);
                 return Status.OK_STATUS;
             }
-            reports.listen(parts, RecordedPrograms.ROBOT_TOOL, RobotSession.PLAYER_TOOL_NAME);
+            reports.listen(parts, RobotSession.PLAYER_TOOL_NAME, player.recorded()
+                    ? new String[] {RecordedPrograms.ROBOT_TOOL, RobotSession.PLAYER_TOOL_NAME} : new String[0]);
+            // Player gone for good (crashed, killed): the session failed, and so did the demo
+            // (async: the session's own handler, which marks it FAILED in the Tools view, runs on the
+            // completing thread, possibly after ours; the status should show what the view shows)
+            parts.session().failed().thenAcceptAsync(reason -> {
+                awaitFailedInToolsView(parts);
+                if (!PlatformUI.getWorkbench().isClosing()) {
+                    fail("the Robot Session '" + config.getName() + "' failed: " + reason, null);
+                }
+            });
             spyLog = parts.session().config().log();
             status.put("spyLog", spyLog == null ? null : spyLog.toString());
-            status.put("phase", "running");
+            synchronized (this) {
+                if (!failed) {
+                    status.put("phase", "running");
+                }
+            }
             DemoLog.info("Robot Session '" + config.getName() + "' runs; spy log " + spyLog);
             IFolder logs = project.getFolder(DemoProject.LOG_FOLDER);
             logs.refreshLocal(IResource.DEPTH_ONE, monitor);
@@ -114,6 +137,44 @@ final class DemoRun {
         return Status.OK_STATUS;
     }
 
+    /** Waits (at most 5 s) until the session's own failure handler has marked it FAILED in the Tools view. */
+    private static void awaitFailedInToolsView(SessionParts parts) {
+        long end = System.nanoTime() + 5_000_000_000L;
+        while (System.nanoTime() < end && !(parts.failure() != null && ToolsModel.get().rows().stream()
+                .anyMatch(r -> r.session().equals(parts.sessionName()) && r.part().equals(SessionParts.SESSION_PART)
+                        && r.state() == ToolState.FAILED))) {
+            try {
+                Thread.sleep(20);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+        }
+    }
+
+    /** The launch's processes (the session's parts and the robot program): label, and exit value once ended. */
+    private List<Map<String, Object>> processes() {
+        ILaunch l = launch;
+        List<Map<String, Object>> out = new ArrayList<>();
+        if (l == null) {
+            return out;
+        }
+        for (IProcess p : l.getProcesses()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("label", p.getLabel());
+            m.put("terminated", p.isTerminated());
+            if (p.isTerminated()) {
+                try {
+                    m.put("exitValue", p.getExitValue());
+                } catch (DebugException e) {
+                    m.put("exitValue", null);
+                }
+            }
+            out.add(m);
+        }
+        return out;
+    }
+
     private void openViews() {
         try {
             views = DemoViews.open(window());
@@ -127,15 +188,29 @@ final class DemoRun {
             return;
         }
         status.put("reports", reports.lines());
+        status.put("playerConsole", reports.console());
+        status.put("processes", processes());
         status.sample(views, spyLog);
+        if (failed) {
+            return; // the failure's sample is taken; the workbench closes or shows the error
+        }
         display.timerExec(SAMPLE_MILLIS, this::sampleEverySecond);
     }
 
-    private void fail(String message, Throwable cause) {
+    private synchronized void fail(String message, Throwable cause) {
+        if (failed) {
+            return;
+        }
         failed = true;
         DemoLog.error(message, cause);
         status.put("error", message);
         status.put("phase", "failed");
+        // one last sample: the parts' states (the Tools view's rows) and Player's console at the failure
+        display.asyncExec(() -> {
+            status.put("playerConsole", reports.console());
+            status.put("processes", processes());
+            status.sample(views, spyLog);
+        });
         if (options.exitAfterSeconds() > 0) {
             display.asyncExec(() -> PlatformUI.getWorkbench().close());
         } else {
@@ -149,6 +224,8 @@ final class DemoRun {
         }
         if (!failed) {
             status.put("reports", reports.lines());
+            status.put("playerConsole", reports.console());
+            status.put("processes", processes());
             status.finish(views, spyLog);
         }
         DemoLog.info("closing the workbench after " + options.exitAfterSeconds() + " s (--exit-after)");

@@ -50,8 +50,8 @@ final class DemoStatus {
             samples.remove(1); // keep the first sample: it is the baseline of "grew"
         }
         fields.put("samples", samples);
-        fields.put("tools", ToolsModel.get().rows().stream().map(r -> Map.of("part", r.part(), "state", r.state().name()))
-                .toList());
+        fields.put("tools", ToolsModel.get().rows().stream().map(r -> Map.of("part", r.part(), "state", r.state().name(),
+                "pid", r.pid())).toList());
         write();
     }
 

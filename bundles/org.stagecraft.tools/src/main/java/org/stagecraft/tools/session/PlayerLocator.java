@@ -20,7 +20,10 @@ import java.util.Map;
  * (Player and the stageplugin have no RPATH): {@code LD_LIBRARY_PATH=<prefix>/lib} before any
  * existing value, {@code PLAYERPATH=<prefix>/lib} (where Player finds the stageplugin) and
  * {@code STAGEPATH=<prefix>/share/stage:<prefix>/lib/Stage-4.3} (Stage's colour database and
- * controllers).
+ * controllers). So does a Player named in the launch configuration or the preference that is the
+ * {@code bin/player} of such an install anywhere (an install is recognised by the {@code env.sh} that
+ * {@code ./stagecraft player-stage install} writes beside {@code bin/}): without those variables it
+ * could not even load its own libraries.
  */
 public final class PlayerLocator {
     /** Overrides where {@code ./stagecraft player-stage install} put Player and Stage. */
@@ -81,10 +84,10 @@ public final class PlayerLocator {
      */
     public Located locate(String launchSetting, String preference, Map<String, String> launchEnvironment) {
         if (isSet(launchSetting)) {
-            return new Located(launchSetting.trim(), Source.LAUNCH_CONFIGURATION, null, launchEnvironment);
+            return named(launchSetting.trim(), Source.LAUNCH_CONFIGURATION, launchEnvironment);
         }
         if (isSet(preference) && !PLAYER_NAME.equals(preference.trim())) {
-            return new Located(preference.trim(), Source.PREFERENCE, null, launchEnvironment);
+            return named(preference.trim(), Source.PREFERENCE, launchEnvironment);
         }
         Path prefix = installPrefix();
         if (prefix != null) {
@@ -96,6 +99,32 @@ public final class PlayerLocator {
         }
         // found or not: a missing one is reported by the start as "no such program on the PATH (...)"
         return new Located(PLAYER_NAME, Source.PATH, null, launchEnvironment);
+    }
+
+    /** A Player the user named: the prefix's variables too when it is the {@code bin/player} of a Stagecraft install. */
+    private Located named(String program, Source source, Map<String, String> launchEnvironment) {
+        Path prefix = installOf(program);
+        return prefix == null ? new Located(program, source, null, launchEnvironment)
+                : new Located(program, source, prefix, prefixEnvironment(prefix, launchEnvironment));
+    }
+
+    /**
+     * The install prefix {@code program} is the Player of ({@code PREFIX/bin/player} with the
+     * {@code PREFIX/env.sh} the install script writes), or null.
+     */
+    static Path installOf(String program) {
+        Path p;
+        try {
+            p = Path.of(program);
+        } catch (java.nio.file.InvalidPathException e) {
+            return null;
+        }
+        Path bin = p.getParent();
+        if (!p.isAbsolute() || bin == null || bin.getParent() == null || !"bin".equals(String.valueOf(bin.getFileName()))) {
+            return null;
+        }
+        Path prefix = bin.getParent();
+        return Files.isRegularFile(prefix.resolve("env.sh")) && Files.isRegularFile(p) ? prefix : null;
     }
 
     private Map<String, String> prefixEnvironment(Path prefix, Map<String, String> launchEnvironment) {

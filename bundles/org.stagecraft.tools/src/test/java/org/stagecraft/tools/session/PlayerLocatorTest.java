@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.List;
 import java.util.Map;
 
 import org.junit.jupiter.api.Test;
@@ -109,5 +110,30 @@ class PlayerLocatorTest {
             assertNull(p.prefix());
         }
         assertEquals(Source.PATH, new PlayerLocator(Map.of()).locate(null, null, Map.of()).source(), "no HOME, no prefix");
+    }
+
+    @Test
+    void aNamedPlayerOfAnInstallGetsThePrefixVariablesAndOneFromElsewhereDoesNot() throws Exception {
+        Path prefix = installed(tmp.resolve("elsewhere/ps"));
+        Files.writeString(prefix.resolve("env.sh"), "# written by the install script\n");
+        Path other = installed(tmp.resolve("no-env-sh")); // a bin/player without the install's env.sh
+        PlayerLocator locator = new PlayerLocator(Map.of("LD_LIBRARY_PATH", "/usr/local/lib")); // no prefix variable
+
+        for (Located p : List.of(locator.locate(prefix.resolve("bin/player").toString(), null, Map.of("A", "b")),
+                locator.locate("", prefix.resolve("bin/player").toString(), Map.of("A", "b")))) {
+            assertEquals(prefix.resolve("bin/player").toString(), p.program());
+            assertEquals(prefix, p.prefix());
+            assertEquals(prefix + "/lib:/usr/local/lib", p.environment().get("LD_LIBRARY_PATH"));
+            assertEquals(prefix + "/lib", p.environment().get("PLAYERPATH"));
+            assertEquals(prefix + "/share/stage:" + prefix + "/lib/Stage-4.3", p.environment().get("STAGEPATH"));
+            assertEquals("b", p.environment().get("A"));
+        }
+        assertEquals(Source.LAUNCH_CONFIGURATION, locator.locate(prefix.resolve("bin/player").toString(), null, Map.of()).source());
+
+        Located plain = locator.locate(other.resolve("bin/player").toString(), null, Map.of("A", "b"));
+        assertNull(plain.prefix());
+        assertEquals(Map.of("A", "b"), plain.environment());
+        assertNull(locator.locate("player", null, Map.of()).prefix(), "a name on the PATH");
+        assertNull(locator.locate(prefix.resolve("bin/missing").toString(), null, Map.of()).prefix(), "no such file");
     }
 }

@@ -28,6 +28,18 @@ record DemoRun(int exitCode, String output, JsonObject status, double seconds) {
      * fails). The status file is read if the demo wrote one.
      */
     static DemoRun run(Path workspace, Path status, long limitSeconds, String... args) throws IOException, InterruptedException {
+        Started started = start(workspace, status, args);
+        return started.await(limitSeconds);
+    }
+
+    /** The script started, not waited for: {@link Started#await} waits and reads what it left. */
+    record Started(Process process, Path out, Path status, long start, String[] args) {
+        DemoRun await(long limitSeconds) throws IOException, InterruptedException {
+            return DemoRun.await(this, limitSeconds);
+        }
+    }
+
+    static Started start(Path workspace, Path status, String... args) throws IOException {
         List<String> command = new ArrayList<>(List.of(root().resolve("stagecraft").toString(), "demo"));
         command.addAll(List.of(args));
         if (status != null) {
@@ -41,7 +53,15 @@ record DemoRun(int exitCode, String output, JsonObject status, double seconds) {
         env.remove("STAGECRAFT_DEMO_EXIT_AFTER");
         env.remove("STAGECRAFT_DEMO_PLAYER");
         long start = System.nanoTime();
-        Process p = pb.start();
+        return new Started(pb.start(), out, status, start, args);
+    }
+
+    private static DemoRun await(Started started, long limitSeconds) throws IOException, InterruptedException {
+        Process p = started.process();
+        Path out = started.out();
+        Path status = started.status();
+        String[] args = started.args();
+        long start = started.start();
         if (!p.waitFor(limitSeconds, TimeUnit.SECONDS)) {
             p.descendants().forEach(ProcessHandle::destroyForcibly);
             p.destroyForcibly();
