@@ -360,7 +360,7 @@ class RealStageHoldTest {
                     int colours = n == 1 ? WorkbenchShot.captureDebugging(robot, thread, png) : WorkbenchShot.capture(project, png);
                     assertTrue(colours > 50, "a real picture, not a blank screen: " + colours + " colours in " + png);
                     assertTrue(holds.hold().isHeld(), "still held while the views opened");
-                    report("screenshot while suspended and held: " + png.toAbsolutePath());
+                    report("screenshot while suspended and held: " + png.toAbsolutePath() + " (Robot View: " + WorkbenchShot.robots() + ")");
                 }
                 thread.resume();
                 DebugEvent resume = events.await("resume #" + n, WAIT, e -> e.getSource() == thread && e.getKind() == DebugEvent.RESUME

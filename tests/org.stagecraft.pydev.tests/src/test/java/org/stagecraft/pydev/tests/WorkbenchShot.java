@@ -29,7 +29,6 @@ import org.eclipse.debug.core.model.IThread;
 import org.eclipse.debug.ui.DebugUITools;
 import org.eclipse.debug.ui.IDebugUIConstants;
 import org.eclipse.debug.ui.IDebugView;
-import org.eclipse.e4.ui.model.application.ui.MElementContainer;
 import org.eclipse.e4.ui.model.application.ui.MUIElement;
 import org.eclipse.e4.ui.model.application.ui.advanced.MPerspective;
 import org.eclipse.e4.ui.model.application.ui.advanced.MPlaceholder;
@@ -109,7 +108,7 @@ final class WorkbenchShot {
         List<MPlaceholder> views = perspective == null ? List.of() : models.findElements(perspective, viewId, MPlaceholder.class, null);
         if (left instanceof MPartStack stack && !views.isEmpty()) {
             MPlaceholder view = views.get(0);
-            MElementContainer<MUIElement> parent = view.getParent();
+            Object parent = view.getParent();
             if (parent != stack) {
                 models.move(view, stack);
             }
@@ -149,7 +148,7 @@ final class WorkbenchShot {
             }
         });
         awaitDrawn(view.get());
-        return save(png);
+        return save(png, () -> true);
     }
 
     /** Opens the views and the log, waits until they have drawn, and saves the shell's picture to {@code png}; returns its colour count. */
@@ -173,6 +172,10 @@ final class WorkbenchShot {
                 if (explorer != null) {
                     page.hideView(explorer); // room for the log and the Robot View
                 }
+                var debug = page.findView(IDebugUIConstants.ID_DEBUG_VIEW);
+                if (debug != null) {
+                    page.hideView(debug); // (the picture at the first suspension has it)
+                }
                 editor.set((SessionLogEditor) IDE.openEditor(page, log, SessionLogEditor.ID, true));
                 view.set((RobotView) page.showView(RobotView.ID));
             } catch (Exception e) {
@@ -182,26 +185,39 @@ final class WorkbenchShot {
         if (failure.get() != null) {
             throw failure.get();
         }
-        Await.until("the Session Log editor to read the live spy log", WAIT,
-                () -> ui(() -> !editor.get().reading() && editor.get().timelineComplete()), () -> "");
-        // what SessionLogEditorTest waits for: the timeline showing the messages, the inspector's first window
-        // (by reflection: those accessors are the editor's internal ones, for its own tests)
-        Await.until("the Session Log editor's timeline and inspector to show the log", WAIT, () -> ui(() -> {
-            SessionLogEditor e = editor.get();
-            Object snapshot = call(call(e, "timeline"), "snapshot");
-            return snapshot != null && ((Number) call(snapshot, "messages")).longValue() > 0 && e.timelineComplete()
-                    && !(Boolean) call(call(call(e, "inspector"), "window"), "isEmpty");
-        }), () -> "");
+        awaitShown(editor.get());
         // the holds on the timeline: a log read before the spy's chunk with them was written shows none; read it again
-        for (int i = 0; i < 10 && ui(() -> (Boolean) call(call(call(editor.get(), "timeline"), "holds"), "isEmpty")); i++) {
-            Thread.sleep(500);
+        Supplier<Boolean> holds = () -> ui(() -> !(Boolean) call(call(call(editor.get(), "timeline"), "holds"), "isEmpty"));
+        for (int i = 0; i < 5 && !soft(Duration.ofSeconds(3), holds); i++) {
             display.syncExec(() -> editor.get().reload());
-            Thread.sleep(300);
-            Await.until("the Session Log editor to read the spy log again", WAIT,
-                    () -> ui(() -> !editor.get().reading() && editor.get().timelineComplete()), () -> "");
+            soft(Duration.ofSeconds(2), () -> ui(() -> editor.get().reading() || !editor.get().timelineComplete()));
+            awaitShown(editor.get());
         }
         awaitDrawn(view.get());
-        return save(png);
+        // the editor reads a growing log again by itself: the picture is taken when it shows a complete reading
+        return save(png, () -> shown(editor.get()));
+    }
+
+    /** What SessionLogEditorTest waits for: the timeline showing the messages, the inspector's first window (by reflection:
+     * those accessors are the editor's internal ones, for its own tests). */
+    private static void awaitShown(SessionLogEditor e) {
+        Await.until("the Session Log editor to read the live spy log", WAIT, () -> ui(() -> !e.reading() && e.timelineComplete()), () -> "");
+        Await.until("the Session Log editor's timeline and inspector to show the log", WAIT, () -> ui(() -> shown(e)), () -> "");
+    }
+
+    /** UI thread. */
+    private static boolean shown(SessionLogEditor e) {
+        Object snapshot = call(call(e, "timeline"), "snapshot");
+        return !e.reading() && snapshot != null && ((Number) call(snapshot, "messages")).longValue() > 0 && e.timelineComplete()
+                && !(Boolean) call(call(call(e, "inspector"), "window"), "isEmpty");
+    }
+
+    /** The robots the workbench's Robot View knows (for the test's report). */
+    static String robots() {
+        return ui(() -> {
+            var v = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage().findView(RobotView.ID);
+            return v instanceof RobotView r && r.scene() != null ? String.valueOf(r.scene().world().robots()) : "(no Robot View)";
+        });
     }
 
     private static void awaitDrawn(RobotView view) {
@@ -224,25 +240,35 @@ final class WorkbenchShot {
     }
 
     /** Saves the shell's picture to {@code png}; returns its colour count (every 4th pixel). */
-    private static int save(Path png) throws Exception {
+    private static int save(Path png, Supplier<Boolean> ready) throws Exception {
         Display display = Display.getDefault();
         AtomicReference<ImageData> data = new AtomicReference<>();
-        display.syncExec(() -> {
-            while (display.readAndDispatch()) {
-                // let the parts paint what they have
+        for (int tries = 0; tries < 100 && data.get() == null; tries++) {
+            if (tries > 0) {
+                Thread.sleep(100);
             }
-            Shell shell = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell();
-            Rectangle b = shell.getBounds();
-            Image image = new Image(display, b.width, b.height);
-            GC gc = new GC(display);
-            try {
-                gc.copyArea(image, b.x, b.y);
-            } finally {
-                gc.dispose();
-            }
-            data.set(image.getImageData());
-            image.dispose();
-        });
+            boolean last = tries == 99; // then as it is
+            display.syncExec(() -> {
+                boolean before = ready.get();
+                while (display.readAndDispatch()) {
+                    // let the parts paint what they have
+                }
+                if (!last && !(before && ready.get())) {
+                    return;
+                }
+                Shell shell = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell();
+                Rectangle b = shell.getBounds();
+                Image image = new Image(display, b.width, b.height);
+                GC gc = new GC(display);
+                try {
+                    gc.copyArea(image, b.x, b.y);
+                } finally {
+                    gc.dispose();
+                }
+                data.set(image.getImageData());
+                image.dispose();
+            });
+        }
         Set<Integer> colours = new HashSet<>();
         ImageData d = data.get();
         for (int y = 0; y < d.height; y += 4) {
