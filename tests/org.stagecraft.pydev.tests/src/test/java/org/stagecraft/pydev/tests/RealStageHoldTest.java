@@ -52,7 +52,10 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.Timeout;
 import org.python.pydev.ast.interpreter_managers.InterpreterInfo;
 import org.python.pydev.ast.interpreter_managers.InterpreterManagersAPI;
@@ -94,6 +97,7 @@ import org.stagecraft.tools.ui.launch.SessionParts;
  * debug events here. Figures go to the test output and to {@code target/hold-latency.txt}.
  */
 @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class RealStageHoldTest {
     private static final Duration WAIT = Duration.ofSeconds(60);
     private static final double SPEED = 0.3;
@@ -230,6 +234,7 @@ class RealStageHoldTest {
     // ------------------------------------------------------------------------------------------ the tests
 
     @Test
+    @Order(1) // first: its pictures then show no robot left in the live Robot View by an earlier test's session
     void atABreakpointTheHeldRobotStopsWithin200msStaysStillAndDrivesOnAfterResume() throws Exception {
         List<Suspension> runs = suspendAtBreakpoint(true, 3);
         for (Suspension s : runs) {
