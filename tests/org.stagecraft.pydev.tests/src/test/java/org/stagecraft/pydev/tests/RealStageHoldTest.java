@@ -52,7 +52,10 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.Timeout;
 import org.python.pydev.ast.interpreter_managers.InterpreterInfo;
 import org.python.pydev.ast.interpreter_managers.InterpreterManagersAPI;
@@ -94,6 +97,7 @@ import org.stagecraft.tools.ui.launch.SessionParts;
  * debug events here. Figures go to the test output and to {@code target/hold-latency.txt}.
  */
 @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class RealStageHoldTest {
     private static final Duration WAIT = Duration.ofSeconds(60);
     private static final double SPEED = 0.3;
@@ -230,6 +234,7 @@ class RealStageHoldTest {
     // ------------------------------------------------------------------------------------------ the tests
 
     @Test
+    @Order(1) // first: its pictures then show no robot left in the live Robot View by an earlier test's session
     void atABreakpointTheHeldRobotStopsWithin200msStaysStillAndDrivesOnAfterResume() throws Exception {
         List<Suspension> runs = suspendAtBreakpoint(true, 3);
         for (Suspension s : runs) {
@@ -324,6 +329,10 @@ class RealStageHoldTest {
         breakpointAsPyDevsRulerMakesIt(robot, line);
         List<Suspension> out = new ArrayList<>();
         List<long[]> suspendTimes = new ArrayList<>();
+        boolean pictures = hold && marks > 1;
+        if (pictures) {
+            WorkbenchShot.arrangeForDebugging(robot); // the Debug view open before the suspensions, as a user has it
+        }
         ILaunch launch;
         try (DebugEvents events = new DebugEvents()) {
             launch = launch(config(hold, false, 500, Map.of("MARK_EVERY", "2.5", "MARKS", String.valueOf(marks), "MARK", mark.toString())),
@@ -348,13 +357,15 @@ class RealStageHoldTest {
                 double speed = poses.speed(arrival[0] - 1000 * MS, arrival[0]);
                 Stop stop = poses.stopFrom(arrival[0], 200 * MS, 3200 * MS);
                 double moved3s = Poses.dist(poses.at(arrival[0]), poses.at(arrival[0] + 3200 * MS));
-                if (hold && n == 1) {
-                    // the picture for docs/debugging-robots.md: suspended, robot held (after the measurement window)
-                    Path png = reportDir().resolve("screenshots/debugging-robots.png");
-                    int colours = WorkbenchShot.capture(project, png);
+                if (pictures && (n == 1 || n == marks)) {
+                    // the pictures, after the measurement window: at the first suspension the program in PyDev's editor at the
+                    // breakpoint, the Debug view and the held robot (docs/tool-manager.md); at the last, the spy log in the
+                    // Session Log editor with the earlier suspensions' holds on its timeline (docs/debugging-robots.md)
+                    Path png = reportDir().resolve(n == 1 ? "screenshots/pydev-robot-session.png" : "screenshots/debugging-robots.png");
+                    int colours = n == 1 ? WorkbenchShot.captureDebugging(robot, thread, png) : WorkbenchShot.capture(project, png);
                     assertTrue(colours > 50, "a real picture, not a blank screen: " + colours + " colours in " + png);
                     assertTrue(holds.hold().isHeld(), "still held while the views opened");
-                    report("screenshot while suspended and held: " + png.toAbsolutePath());
+                    report("screenshot while suspended and held: " + png.toAbsolutePath() + " (Robot View: " + WorkbenchShot.robots() + ")");
                 }
                 thread.resume();
                 DebugEvent resume = events.await("resume #" + n, WAIT, e -> e.getSource() == thread && e.getKind() == DebugEvent.RESUME

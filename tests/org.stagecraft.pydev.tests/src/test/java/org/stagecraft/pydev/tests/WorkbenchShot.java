@@ -4,6 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Supplier;
@@ -21,20 +22,133 @@ import org.eclipse.swt.graphics.ImageLoader;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Shell;
+import org.eclipse.core.runtime.preferences.IEclipsePreferences;
+import org.eclipse.core.runtime.preferences.InstanceScope;
+import org.eclipse.debug.core.model.IStackFrame;
+import org.eclipse.debug.core.model.IThread;
+import org.eclipse.debug.ui.DebugUITools;
+import org.eclipse.debug.ui.IDebugUIConstants;
+import org.eclipse.debug.ui.IDebugView;
+import org.eclipse.e4.ui.model.application.ui.MUIElement;
+import org.eclipse.e4.ui.model.application.ui.advanced.MPerspective;
+import org.eclipse.e4.ui.model.application.ui.advanced.MPlaceholder;
+import org.eclipse.e4.ui.model.application.ui.basic.MPartStack;
+import org.eclipse.e4.ui.model.application.ui.basic.MWindow;
+import org.eclipse.e4.ui.workbench.modeling.EModelService;
+import org.eclipse.jface.viewers.StructuredSelection;
+import org.eclipse.ui.IEditorPart;
+import org.eclipse.ui.IPageLayout;
 import org.eclipse.ui.IWorkbenchPage;
+import org.eclipse.ui.IWorkbenchWindow;
+import org.eclipse.ui.part.FileEditorInput;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.ide.IDE;
 import org.stagecraft.replay.ui.SessionLogEditor;
 import org.stagecraft.views.RobotView;
 
 /**
- * A picture of the workbench while the robot program is suspended and its robot held: the session's spy log (still being written) in the Session Log editor, and a Robot View following the
- * live session. Saved as PNG (SWT GC copyArea of the shell, ImageLoader) for docs/debugging-robots.md.
+ * Pictures of the workbench while the robot program is suspended and its robot held, saved as PNG (SWT GC copyArea of the
+ * shell, ImageLoader): {@link #capture} the session's spy log (still being written) in the Session Log editor, with its
+ * holds on the timeline, and a Robot View following the live session (docs/debugging-robots.md); {@link #captureDebugging}
+ * the program in PyDev's editor at the current instruction, the Debug view and the Robot View (docs/tool-manager.md).
+ * Side outputs of RealStageHoldTest: the waits for what they show give up quietly (the test's own assertions decide).
  */
 final class WorkbenchShot {
     private static final Duration WAIT = Duration.ofSeconds(60);
 
     private WorkbenchShot() {
+    }
+
+    /**
+     * Before a debug launch: the workbench arranged as a user debugging a robot program would (1280x1024; the Debug view
+     * open in the left stack, so that at a suspension the debug UI selects the top stack frame and shows it in the
+     * program's editor; the Outline closed, room for the Robot View) and the Debug perspective not switched to at suspension.
+     */
+    static void arrangeForDebugging(IFile program) throws Exception {
+        IEclipsePreferences debugUi = InstanceScope.INSTANCE.getNode(IDebugUIConstants.PLUGIN_ID);
+        debugUi.put(IDebugUIConstants.PLUGIN_ID + ".switch_perspective_on_suspend", "never");
+        debugUi.flush();
+        AtomicReference<Exception> failure = new AtomicReference<>();
+        Display.getDefault().syncExec(() -> {
+            try {
+                IWorkbenchWindow window = PlatformUI.getWorkbench().getActiveWorkbenchWindow();
+                IWorkbenchPage page = window.getActivePage();
+                window.getShell().setBounds(0, 0, 1280, 1024);
+                var outline = page.findView(IPageLayout.ID_OUTLINE);
+                if (outline != null) {
+                    page.hideView(outline);
+                }
+                page.showView(IDebugUIConstants.ID_DEBUG_VIEW);
+                moveToLeftStack(window, IDebugUIConstants.ID_DEBUG_VIEW);
+                page.showView(RobotView.ID, null, IWorkbenchPage.VIEW_VISIBLE);
+                page.showView(IDebugUIConstants.ID_DEBUG_VIEW, null, IWorkbenchPage.VIEW_VISIBLE);
+                IEditorPart editor = page.findEditor(new FileEditorInput(program));
+                if (editor == null) {
+                    editor = IDE.openEditor(page, program);
+                }
+                page.activate(editor);
+            } catch (Exception e) {
+                failure.set(e);
+            }
+        });
+        if (failure.get() != null) {
+            throw failure.get();
+        }
+    }
+
+    /** Moves the view's placeholder into the perspective's left stack (the Project Explorer's), if both are there. */
+    private static void moveToLeftStack(IWorkbenchWindow window, String viewId) {
+        EModelService models = window.getService(EModelService.class);
+        MWindow mWindow = window.getService(MWindow.class);
+        if (models == null || mWindow == null) {
+            return;
+        }
+        MPerspective perspective = models.getActivePerspective(mWindow);
+        MUIElement left = perspective == null ? null : models.find("org.stagecraft.ui.left", perspective);
+        List<MPlaceholder> views = perspective == null ? List.of() : models.findElements(perspective, viewId, MPlaceholder.class, null);
+        if (left instanceof MPartStack stack && !views.isEmpty()) {
+            MPlaceholder view = views.get(0);
+            Object parent = view.getParent();
+            if (parent != stack) {
+                models.move(view, stack);
+            }
+            stack.setVisible(true);
+            stack.setToBeRendered(true);
+        }
+    }
+
+    /**
+     * At a suspension: the program in its (PyDev's) editor with the current instruction, the Debug view with the suspended
+     * thread's top frame selected (as the debug UI selected it; selected here only if it did not within the wait) and the
+     * Robot View; saves the shell's picture to {@code png}, returns its colour count.
+     */
+    static int captureDebugging(IFile program, IThread thread, Path png) throws Exception {
+        Display display = Display.getDefault();
+        IStackFrame top = thread.getTopStackFrame();
+        if (!soft(Duration.ofSeconds(15), () -> ui(() -> DebugUITools.getDebugContext() instanceof IStackFrame f && thread.equals(f.getThread())))) {
+            display.syncExec(() -> {
+                IWorkbenchPage page = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+                if (page.findView(IDebugUIConstants.ID_DEBUG_VIEW) instanceof IDebugView v) {
+                    v.getViewer().setSelection(new StructuredSelection(top), true);
+                }
+            });
+            soft(Duration.ofSeconds(10), () -> ui(() -> DebugUITools.getDebugContext() instanceof IStackFrame f && thread.equals(f.getThread())));
+        }
+        soft(Duration.ofSeconds(15), () -> ui(() -> {
+            IEditorPart e = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage().getActiveEditor();
+            return e != null && program.equals(e.getEditorInput().getAdapter(IFile.class));
+        }));
+        AtomicReference<RobotView> view = new AtomicReference<>();
+        display.syncExec(() -> {
+            try {
+                IWorkbenchPage page = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
+                view.set((RobotView) page.showView(RobotView.ID, null, IWorkbenchPage.VIEW_VISIBLE));
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        awaitDrawn(view.get());
+        return save(png, () -> true);
     }
 
     /** Opens the views and the log, waits until they have drawn, and saves the shell's picture to {@code png}; returns its colour count. */
@@ -58,6 +172,10 @@ final class WorkbenchShot {
                 if (explorer != null) {
                     page.hideView(explorer); // room for the log and the Robot View
                 }
+                var debug = page.findView(IDebugUIConstants.ID_DEBUG_VIEW);
+                if (debug != null) {
+                    page.hideView(debug); // (the picture at the first suspension has it)
+                }
                 editor.set((SessionLogEditor) IDE.openEditor(page, log, SessionLogEditor.ID, true));
                 view.set((RobotView) page.showView(RobotView.ID));
             } catch (Exception e) {
@@ -67,37 +185,90 @@ final class WorkbenchShot {
         if (failure.get() != null) {
             throw failure.get();
         }
-        Await.until("the Session Log editor to read the live spy log", WAIT,
-                () -> ui(() -> !editor.get().reading() && editor.get().timelineComplete()), () -> "");
-        // what SessionLogEditorTest waits for: the timeline showing the messages, the inspector's first window
-        // (by reflection: those accessors are the editor's internal ones, for its own tests)
-        Await.until("the Session Log editor's timeline and inspector to show the log", WAIT, () -> ui(() -> {
-            SessionLogEditor e = editor.get();
-            Object snapshot = call(call(e, "timeline"), "snapshot");
-            return snapshot != null && ((Number) call(snapshot, "messages")).longValue() > 0 && e.timelineComplete()
-                    && !(Boolean) call(call(call(e, "inspector"), "window"), "isEmpty");
-        }), () -> "");
-        Await.until("the Robot View to draw", WAIT, () -> ui(() -> view.get().frames() > 0), () -> "");
-        long frames = ui(() -> view.get().frames());
-        display.syncExec(() -> view.get().requestRedraw());
-        Await.until("the Robot View to draw again", WAIT, () -> ui(() -> view.get().frames() > frames), () -> "");
-        AtomicReference<ImageData> data = new AtomicReference<>();
-        display.syncExec(() -> {
-            while (display.readAndDispatch()) {
-                // let the parts paint what they have
-            }
-            Shell shell = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell();
-            Rectangle b = shell.getBounds();
-            Image image = new Image(display, b.width, b.height);
-            GC gc = new GC(display);
-            try {
-                gc.copyArea(image, b.x, b.y);
-            } finally {
-                gc.dispose();
-            }
-            data.set(image.getImageData());
-            image.dispose();
+        awaitShown(editor.get());
+        // the holds on the timeline: a log read before the spy's chunk with them was written shows none; read it again
+        Supplier<Boolean> holds = () -> ui(() -> !(Boolean) call(call(call(editor.get(), "timeline"), "holds"), "isEmpty"));
+        for (int i = 0; i < 5 && !soft(Duration.ofSeconds(3), holds); i++) {
+            display.syncExec(() -> editor.get().reload());
+            soft(Duration.ofSeconds(2), () -> ui(() -> editor.get().reading() || !editor.get().timelineComplete()));
+            awaitShown(editor.get());
+        }
+        awaitDrawn(view.get());
+        // the editor reads a growing log again by itself: the picture is taken when it shows a complete reading
+        return save(png, () -> shown(editor.get()));
+    }
+
+    /** What SessionLogEditorTest waits for: the timeline showing the messages, the inspector's first window (by reflection:
+     * those accessors are the editor's internal ones, for its own tests). */
+    private static void awaitShown(SessionLogEditor e) {
+        Await.until("the Session Log editor to read the live spy log", WAIT, () -> ui(() -> !e.reading() && e.timelineComplete()), () -> "");
+        Await.until("the Session Log editor's timeline and inspector to show the log", WAIT, () -> ui(() -> shown(e)), () -> "");
+    }
+
+    /** UI thread. */
+    private static boolean shown(SessionLogEditor e) {
+        Object snapshot = call(call(e, "timeline"), "snapshot");
+        return !e.reading() && snapshot != null && ((Number) call(snapshot, "messages")).longValue() > 0 && e.timelineComplete()
+                && !(Boolean) call(call(call(e, "inspector"), "window"), "isEmpty");
+    }
+
+    /** The robots the workbench's Robot View knows (for the test's report). */
+    static String robots() {
+        return ui(() -> {
+            var v = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage().findView(RobotView.ID);
+            return v instanceof RobotView r && r.scene() != null ? String.valueOf(r.scene().world().robots()) : "(no Robot View)";
         });
+    }
+
+    private static void awaitDrawn(RobotView view) {
+        Await.until("the Robot View to draw", WAIT, () -> ui(() -> view.frames() > 0), () -> "");
+        long frames = ui(() -> view.frames());
+        Display.getDefault().syncExec(() -> view.requestRedraw());
+        Await.until("the Robot View to draw again", WAIT, () -> ui(() -> view.frames() > frames), () -> "");
+    }
+
+    /** Whether {@code condition} held within {@code timeout} (false, not a failure, if it did not). */
+    private static boolean soft(Duration timeout, Supplier<Boolean> condition) throws InterruptedException {
+        long end = System.nanoTime() + timeout.toNanos();
+        while (System.nanoTime() < end) {
+            if (Boolean.TRUE.equals(condition.get())) {
+                return true;
+            }
+            Thread.sleep(100);
+        }
+        return false;
+    }
+
+    /** Saves the shell's picture to {@code png}; returns its colour count (every 4th pixel). */
+    private static int save(Path png, Supplier<Boolean> ready) throws Exception {
+        Display display = Display.getDefault();
+        AtomicReference<ImageData> data = new AtomicReference<>();
+        for (int tries = 0; tries < 100 && data.get() == null; tries++) {
+            if (tries > 0) {
+                Thread.sleep(100);
+            }
+            boolean last = tries == 99; // then as it is
+            display.syncExec(() -> {
+                boolean before = ready.get();
+                while (display.readAndDispatch()) {
+                    // let the parts paint what they have
+                }
+                if (!last && !(before && ready.get())) {
+                    return;
+                }
+                Shell shell = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell();
+                Rectangle b = shell.getBounds();
+                Image image = new Image(display, b.width, b.height);
+                GC gc = new GC(display);
+                try {
+                    gc.copyArea(image, b.x, b.y);
+                } finally {
+                    gc.dispose();
+                }
+                data.set(image.getImageData());
+                image.dispose();
+            });
+        }
         Set<Integer> colours = new HashSet<>();
         ImageData d = data.get();
         for (int y = 0; y < d.height; y += 4) {
