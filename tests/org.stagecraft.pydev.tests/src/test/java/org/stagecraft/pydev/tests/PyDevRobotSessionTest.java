@@ -20,13 +20,11 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.stream.Stream;
 
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IMarker;
 import org.eclipse.core.resources.IProject;
 import org.eclipse.core.resources.IResource;
-import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.NullProgressMonitor;
 import org.eclipse.core.runtime.preferences.IEclipsePreferences;
@@ -56,7 +54,6 @@ import org.python.pydev.ast.interpreter_managers.InterpreterManagersAPI;
 import org.python.pydev.ast.interpreter_managers.PythonInterpreterManager;
 import org.python.pydev.core.IInterpreterInfo;
 import org.python.pydev.core.IInterpreterManager;
-import org.python.pydev.core.IPythonNature;
 import org.python.pydev.debug.core.Constants;
 import org.python.pydev.debug.model.PyBreakpoint;
 import org.python.pydev.debug.ui.actions.PyBreakpointRulerAction;
@@ -352,7 +349,7 @@ class PyDevRobotSessionTest {
                 lm.generateLaunchConfigurationName("pydev-session"));
         wc.setAttribute(LaunchAttributes.CFG, project.getFile("worlds/pioneer-laser-sonar.cfg").getFullPath().toString());
         wc.setAttribute(LaunchAttributes.PLAYER, standIn());
-        wc.setAttribute(LaunchAttributes.PLAYER_ENVIRONMENT, Map.of("STANDIN_TRACE", traces().resolve(TRACE).toString()));
+        wc.setAttribute(LaunchAttributes.PLAYER_ENVIRONMENT, Map.of("STANDIN_TRACE", WorldsProject.traces().resolve(TRACE).toString()));
         wc.setAttribute(LaunchAttributes.DEFAULT_PORT, port);
         wc.setAttribute(LaunchAttributes.LOG_FOLDER, "");
         wc.setAttribute(LaunchAttributes.TOOLS, List.<String>of());
@@ -393,34 +390,9 @@ class PyDevRobotSessionTest {
         return s;
     }
 
-    private static Path traces() {
-        String prop = System.getProperty("stagecraft.traces");
-        if (prop == null || !Files.isDirectory(Path.of(prop))) {
-            throw new IllegalStateException("the trace corpus (tests/traces) not found: -Dstagecraft.traces=" + prop);
-        }
-        return Path.of(prop).toAbsolutePath().normalize();
-    }
-
     /** A PyDev project (source folder: the project; one external library) holding a copy of tests/traces/worlds. */
     private static IProject pyDevProjectWithWorlds(String name, Path externalLibrary) throws Exception {
-        IProject p = ResourcesPlugin.getWorkspace().getRoot().getProject(name);
-        p.create(new NullProgressMonitor());
-        p.open(new NullProgressMonitor());
-        Path from = traces().resolve("worlds");
-        Path to = p.getLocation().toPath().resolve("worlds");
-        try (Stream<Path> files = Files.walk(from)) {
-            for (Path f : (Iterable<Path>) files::iterator) {
-                Path dest = to.resolve(from.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(dest);
-                } else {
-                    Files.copy(f, dest);
-                }
-            }
-        }
-        p.refreshLocal(IResource.DEPTH_INFINITE, new NullProgressMonitor());
-        PythonNature.addNature(p, new NullProgressMonitor(), IPythonNature.Versions.PYTHON_VERSION_LATEST, "/" + name,
-                externalLibrary.toString(), IPythonNature.DEFAULT_INTERPRETER, null);
+        IProject p = WorldsProject.create(name, externalLibrary);
         assertTrue(p.hasNature(PythonNature.PYTHON_NATURE_ID));
         return p;
     }

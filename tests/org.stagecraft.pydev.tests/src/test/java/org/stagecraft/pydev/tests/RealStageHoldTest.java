@@ -32,7 +32,6 @@ import java.util.stream.Stream;
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IProject;
 import org.eclipse.core.resources.IResource;
-import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.NullProgressMonitor;
 import org.eclipse.core.runtime.preferences.IEclipsePreferences;
 import org.eclipse.core.runtime.preferences.InstanceScope;
@@ -62,10 +61,8 @@ import org.python.pydev.ast.interpreter_managers.InterpreterManagersAPI;
 import org.python.pydev.ast.interpreter_managers.PythonInterpreterManager;
 import org.python.pydev.core.IInterpreterInfo;
 import org.python.pydev.core.IInterpreterManager;
-import org.python.pydev.core.IPythonNature;
 import org.python.pydev.debug.model.PyBreakpoint;
 import org.python.pydev.debug.ui.actions.PyBreakpointRulerAction;
-import org.python.pydev.plugin.nature.PythonNature;
 import org.python.pydev.plugin.preferences.PydevRootPrefs;
 import org.python.pydev.shared_core.structure.Tuple;
 import org.stagecraft.spy.hold.HoldListener;
@@ -758,28 +755,7 @@ class RealStageHoldTest {
     // ------------------------------------------------------------------------------------------ the project
 
     private static IProject pyDevProjectWithWorlds(String name) throws Exception {
-        IProject p = ResourcesPlugin.getWorkspace().getRoot().getProject(name);
-        p.create(new NullProgressMonitor());
-        p.open(new NullProgressMonitor());
-        String prop = System.getProperty("stagecraft.traces");
-        assertTrue(prop != null && Files.isDirectory(Path.of(prop)), "-Dstagecraft.traces: " + prop);
-        Path from = Path.of(prop).resolve("worlds");
-        Path to = p.getLocation().toPath().resolve("worlds");
-        try (Stream<Path> files = Files.walk(from)) {
-            for (Path f : (Iterable<Path>) files::iterator) {
-                Path dest = to.resolve(from.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(dest);
-                } else {
-                    Files.copy(f, dest);
-                }
-            }
-        }
-        Files.createDirectories(p.getLocation().toPath().resolve("logs"));
-        p.refreshLocal(IResource.DEPTH_INFINITE, new NullProgressMonitor());
-        PythonNature.addNature(p, new NullProgressMonitor(), IPythonNature.Versions.PYTHON_VERSION_LATEST, "/" + name, null,
-                IPythonNature.DEFAULT_INTERPRETER, null);
-        return p;
+        return WorldsProject.create(name, null, "logs");
     }
 
     private static IFile write(IProject p, String path, String text) throws Exception {
