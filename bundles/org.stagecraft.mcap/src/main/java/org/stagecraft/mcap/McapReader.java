@@ -518,6 +518,9 @@ public final class McapReader implements AutoCloseable {
         if (packedSize < 0 || rawSize < 0 || packedSize > in.remaining() || rawSize > MAX_RECORD) {
             throw new McapFormatException("chunk sizes out of range");
         }
+        if (packedSize != in.remaining()) {
+            throw new McapFormatException("the chunk's records do not fill its record (a damaged length)");
+        }
         byte[] raw;
         switch (compression) {
             case "" -> raw = in.bytes((int) packedSize);
