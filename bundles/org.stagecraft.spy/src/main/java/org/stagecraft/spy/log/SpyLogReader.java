@@ -255,7 +255,7 @@ public final class SpyLogReader implements AutoCloseable {
             int reasonLen = r.u16();
             String reason = new String(r.bytes(reasonLen), StandardCharsets.UTF_8);
             byte[] bytes = r.bytes(r.remaining());
-            return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), offset, kind, bytes, reason);
+            return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), offset, kind, bytes, reason, m.publishTime());
         }
         if (c.role() != Role.WIRE) {
             return null; // a channel of another tool, or holds
@@ -280,7 +280,8 @@ public final class SpyLogReader implements AutoCloseable {
                 }
             }
         });
-        return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), v[1], Layout.kind((int) v[2]), bytes[0], reason[0]);
+        return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), v[1], Layout.kind((int) v[2]), bytes[0], reason[0],
+                m.publishTime());
     }
 
     // --- the contract ----------------------------------------------------------------------------
