@@ -19,7 +19,11 @@ For a spy log (session metadata `stagecraft.session`): each wire channel must be
 opened equal connections closed, and decoded JSON channels (an export's) must fit their JSON Schema.
 Exit status 1 on any failure, with the file and why.
 
-usage: mcap-check.py FILE.mcap [...]
+`--self-test` first makes files that the official tool rejects (a message out of order, a schema
+with an empty encoding, a schema-less non-JSON channel, a damaged chunk) with the Python library's
+writer and fails unless this check rejects each of them too, and accepts a good one.
+
+usage: mcap-check.py [--self-test] FILE.mcap [...]
 """
 import json
 import struct
@@ -268,7 +272,56 @@ def check(path):
     print(line)
 
 
+def self_test():
+    """Each bad file must be rejected for its own reason, the good one accepted."""
+    import os
+    import tempfile
+    from mcap.writer import CompressionType, Writer
+
+    def make(path, times=(1000, 1001, 1002), schema=("t", "jsonschema", b"{}"), encoding="json", data=b'{"n":1}'):
+        with open(path, "wb") as f:
+            w = Writer(f, compression=CompressionType.NONE)
+            w.start(profile="", library="mcap-check self-test")
+            c = w.register_channel("/c", encoding, w.register_schema(*schema) if schema else 0)
+            for i, t in enumerate(times):
+                w.add_message(c, log_time=t, publish_time=t, data=data, sequence=i)
+            w.finish()
+
+    with tempfile.TemporaryDirectory() as d:
+        good = os.path.join(d, "good.mcap")
+        make(good)
+        bad = {
+            "strict message order": lambda p: make(p, times=(1000, 990, 1010)),
+            "empty encoding": lambda p: make(p, schema=("player.Message", "", b""), encoding="x-player-xdr"),
+            "mcap cat --json refuses": lambda p: make(p, schema=None, encoding="x-player-xdr"),
+            "CRC": lambda p: (make(p), damage(p)),
+        }
+
+        def damage(p):
+            with open(p, "r+b") as f:
+                content = f.read()
+                at = content.index(b'{"n":1}')  # inside the uncompressed chunk
+                f.seek(at)
+                f.write(b'{"n":2}')
+
+        check(good)
+        for why, build in bad.items():
+            path = os.path.join(d, "bad.mcap")
+            build(path)
+            try:
+                check(path)
+            except Exception as e:  # the check must reject it, for this reason
+                if why.lower() not in str(e).lower():
+                    raise AssertionError(f"self-test: a file with {why} was rejected for another reason: {e}")
+                continue
+            raise AssertionError(f"self-test: a file with {why} was accepted")
+    print(f"mcap-check self-test: a good file accepted, {len(bad)} bad ones rejected for their reasons")
+
+
 def main(paths):
+    if paths and paths[0] == "--self-test":
+        self_test()
+        paths = paths[1:]
     if not paths:
         print(__doc__.strip().splitlines()[-1], file=sys.stderr)
         return 2

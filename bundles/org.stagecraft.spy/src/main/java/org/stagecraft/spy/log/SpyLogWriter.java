@@ -53,6 +53,8 @@ public final class SpyLogWriter implements AutoCloseable {
     private final int eventChannel;
     private final int wireSchema;
     private final Map<StreamKey, Integer> wireChannels = new HashMap<>();
+    /** The spy's own channels (events, wire, hold): not for {@link #message}. */
+    private final java.util.Set<Integer> ownChannels = new java.util.HashSet<>();
     /** Stagecraft's hold channel ({@link #hold}), or -1 until the first hold entry. */
     private int holdChannel = -1;
     /** Addresses of each opened connection, repeated in its wire channels' metadata. */
@@ -92,6 +94,7 @@ public final class SpyLogWriter implements AutoCloseable {
         mcap.metadata(Layout.METADATA_SESSION, metadata);
         int eventSchema = mcap.addSchema(Layout.SCHEMA_EVENT_NAME, "jsonschema", Layout.utf8(Layout.EVENT_SCHEMA_JSON));
         eventChannel = mcap.addChannel(Layout.TOPIC_EVENTS, Layout.EVENT_ENCODING, eventSchema, Map.of());
+        ownChannels.add(eventChannel);
         wireSchema = mcap.addSchema(WireProto.WIRE_MESSAGE, Layout.PROTOBUF, WireProto.DESCRIPTOR_SET);
     }
 
@@ -167,9 +170,9 @@ public final class SpyLogWriter implements AutoCloseable {
         return mcap.addChannel(topic, messageEncoding, schemaId, metadata);
     }
 
-    /** One message on a channel {@link #addChannel} made. */
+    /** One message on a channel {@link #addChannel} made; its log time never goes back, like the spy's entries'. */
     public synchronized void message(int channel, long timeNanos, byte[] data) throws IOException {
-        if (channel == eventChannel || channel == holdChannel || wireChannels.containsValue(channel)) {
+        if (ownChannels.contains(channel)) {
             throw new IllegalArgumentException("channel " + channel + " was not added with addChannel");
         }
         mcap.message(channel, logTime(timeNanos), timeNanos, data);
@@ -184,6 +187,7 @@ public final class SpyLogWriter implements AutoCloseable {
         if (holdChannel < 0) {
             int schema = mcap.addSchema(WireProto.HOLD_ACTION, Layout.PROTOBUF, WireProto.DESCRIPTOR_SET);
             holdChannel = mcap.addChannel(Layout.TOPIC_HOLD, Layout.PROTOBUF, schema, Map.of("stagecraft", "hold"));
+            ownChannels.add(holdChannel);
         }
         synchronized (mcap) {
             RecordBuffer b = mcap.beginMessage(holdChannel, logTime(e.timeNanos()), e.timeNanos());
@@ -218,11 +222,7 @@ public final class SpyLogWriter implements AutoCloseable {
     /** Writes the open chunk, the summary and the footer, and closes the file. */
     @Override
     public synchronized void close() throws IOException {
-        try {
-            mcap.close();
-        } catch (IOException e) {
-            throw new IOException(e.getMessage().replace("MCAP file", "spy log"), e.getCause() != null ? e.getCause() : e);
-        }
+        mcap.close();
     }
 
     // --- messages --------------------------------------------------------------------------------
@@ -244,6 +244,7 @@ public final class SpyLogWriter implements AutoCloseable {
             id = mcap.addChannel(Layout.wireTopic(conn, port, dir), Layout.PROTOBUF, wireSchema,
                     new TreeMap<>(Layout.wireChannelMetadata(conn, port, dir, addresses.getOrDefault(conn, Map.of()))));
             wireChannels.put(key, id);
+            ownChannels.add(id);
         }
         return id;
     }
