@@ -57,7 +57,7 @@ public final class McapWriter implements AutoCloseable {
     private final List<Channel> channels = new ArrayList<>(); // id - 1
     private final Set<Integer> schemaWritten = new HashSet<>();
     private final Set<Integer> channelWritten = new HashSet<>();
-    private final long[] sequences = new long[0x10000];
+    private long[] sequences = new long[16]; // by channel id
 
     // the open chunk and the definitions to write before it
     private final RecordBuffer definitions = new RecordBuffer(256);
@@ -154,6 +154,9 @@ public final class McapWriter implements AutoCloseable {
         Channel c = new Channel(channels.size() + 1, schemaId, topic, messageEncoding,
                 new TreeMap<>(metadata == null ? Map.of() : metadata));
         channels.add(c);
+        if (c.id() >= sequences.length) {
+            sequences = Arrays.copyOf(sequences, Math.max(sequences.length * 2, c.id() + 1));
+        }
         return c.id();
     }
 
