@@ -43,9 +43,6 @@ final class Layout {
     /** The hold channel's encoding in logs written before version 2. */
     static final String OLD_HOLD_ENCODING = "x-stagecraft-hold";
 
-    /** Old wire messages: offset u64, kind u8, reason length u16 */
-    static final int OLD_WIRE_PREFIX = 8 + 1 + 2;
-
     static final String EVENT_SCHEMA_JSON = """
             {"$schema":"https://json-schema.org/draft/2020-12/schema","title":"Stagecraft spy event",\
             "type":"object","required":["event","conn"],\
