@@ -17,6 +17,7 @@ import org.stagecraft.replay.play.ReplayClock;
 import org.stagecraft.replay.play.ReplayLoop;
 import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.scene.SharedWorld;
+import org.stagecraft.streams.StreamBus;
 
 /**
  * With STAGECRAFT_REPLAY=/path/to/a/log in the environment (a recorded trace, a spy log or a Player
@@ -40,21 +41,41 @@ public final class ReplayAtStartup implements IStartup {
             log.warn(VARIABLE + ": cannot read " + path);
             return;
         }
-        // the workbench's world model must listen before the first geometry reply is replayed
-        SharedWorld.of(WorkbenchBus.get());
         try {
-            SessionLog sessionLog = SessionLogs.open(path);
-            Replayer replayer = new Replayer(sessionLog, WorkbenchBus.get(), ReplayClock.system());
-            closeAtShutdown(replayer, sessionLog, log);
-            ReplayLoop.start(replayer);
+            Running running = start(path, WorkbenchBus.get());
+            closeAtShutdown(running, log);
             log.info("replaying " + path + " onto the workbench stream bus, in a loop");
         } catch (IOException e) {
             log.error(VARIABLE + ": cannot replay " + path + ": " + e.getMessage());
         }
     }
 
+    /** A log being replayed in a loop; closing stops the replay and closes the log. */
+    public record Running(Replayer replayer, SessionLog log) implements AutoCloseable {
+        @Override
+        public void close() throws IOException {
+            replayer.close();
+            log.close();
+        }
+    }
+
+    /** Opens {@code path} and replays it onto {@code bus} in a loop, the bus's world model listening first. */
+    public static Running start(Path path, StreamBus bus) throws IOException {
+        // the bus's world model must listen before the first geometry reply is replayed
+        SharedWorld.of(bus);
+        SessionLog sessionLog = SessionLogs.open(path);
+        try {
+            Replayer replayer = new Replayer(sessionLog, bus, ReplayClock.system());
+            ReplayLoop.start(replayer);
+            return new Running(replayer, sessionLog);
+        } catch (IOException | RuntimeException e) {
+            sessionLog.close();
+            throw e;
+        }
+    }
+
     /** An imported trace lives in a temporary spy log, which closing deletes. */
-    private static void closeAtShutdown(Replayer replayer, SessionLog sessionLog, ILog log) {
+    private static void closeAtShutdown(Running running, ILog log) {
         PlatformUI.getWorkbench().addWorkbenchListener(new IWorkbenchListener() {
             @Override
             public boolean preShutdown(IWorkbench workbench, boolean forced) {
@@ -63,11 +84,10 @@ public final class ReplayAtStartup implements IStartup {
 
             @Override
             public void postShutdown(IWorkbench workbench) {
-                replayer.close();
                 try {
-                    sessionLog.close();
+                    running.close();
                 } catch (IOException e) {
-                    log.warn(VARIABLE + ": closing " + sessionLog.path() + ": " + e.getMessage());
+                    log.warn(VARIABLE + ": closing " + running.log().path() + ": " + e.getMessage());
                 }
             }
         });
