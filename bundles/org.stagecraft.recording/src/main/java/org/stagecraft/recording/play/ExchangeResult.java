@@ -1,4 +1,4 @@
-package org.stagecraft.demo.recorded;
+package org.stagecraft.recording.play;
 
 /**
  * What one side of a replayed connection saw.

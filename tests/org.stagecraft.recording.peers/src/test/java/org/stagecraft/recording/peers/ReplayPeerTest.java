@@ -1,4 +1,4 @@
-package org.stagecraft.recording.peer;
+package org.stagecraft.recording.peers;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;

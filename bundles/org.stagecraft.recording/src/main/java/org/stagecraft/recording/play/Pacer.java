@@ -1,4 +1,4 @@
-package org.stagecraft.demo.recorded;
+package org.stagecraft.recording.play;
 
 import java.util.concurrent.locks.LockSupport;
 

@@ -1,4 +1,4 @@
-package org.stagecraft.recording.peer;
+package org.stagecraft.recording.peers;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;

@@ -1,4 +1,4 @@
-package org.stagecraft.demo.recorded;
+package org.stagecraft.recording.play;
 
 /**
  * The bytes one recv() returned in the recording, and when: seconds after the connection was opened.
