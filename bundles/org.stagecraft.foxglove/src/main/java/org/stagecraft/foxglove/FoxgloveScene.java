@@ -50,6 +50,8 @@ public final class FoxgloveScene {
     static final int TRAIL_LENGTH = 500;
     /** Stage's sonar cone (15 degrees), used until a ranger config gives the aperture. */
     static final double DEFAULT_APERTURE = Math.toRadians(15);
+    /** A ranger of at most this many beams, with no geometry yet, is taken for a ring of transducers. */
+    static final int MAX_RING = 32;
     /** Stage's blobfinder field of view (60 degrees): Player's blob data has no bearing, only pixels. */
     static final double BLOBFINDER_FOV = Math.toRadians(60);
 
@@ -288,11 +290,21 @@ public final class FoxgloveScene {
         }
     }
 
+    /** Until its first pose the robot stands at the origin, so that what is drawn on it is in the frame tree. */
+    private void root(long t, Robot r) {
+        if (!r.rooted) {
+            r.rooted = true;
+            publish(FoxgloveNames.robotTopic(r.name, "tf"), FoxgloveSchemas.FRAME_TRANSFORM, t,
+                    FoxgloveMessages.frameTransform(t, FoxgloveNames.WORLD, r.name, 0, 0, 0, 0));
+        }
+    }
+
     /** The robot's body: a box of its position2d geometry (a Pioneer's size until one is seen). */
     private void body(long t, Robot r) {
         Placement p = r.placements.get(new Device(Position2d.CODE, 0));
         double l = p != null && p.length() > 0 ? p.length() : 0.44, w = p != null && p.width() > 0 ? p.width() : 0.38;
         double h = p != null && p.height() > 0 ? p.height() : 0.22;
+        root(t, r);
         FoxgloveMessages.Entity e = new FoxgloveMessages.Entity(t, r.name, r.name + "/body");
         e.cube(p == null ? 0 : p.x(), p == null ? 0 : p.y(), h / 2, p == null ? 0 : p.yaw(), l, w, h, BODY);
         e.text(0, 0, h + 0.2, r.name, new double[] { 1, 1, 1, 1 });
@@ -304,12 +316,7 @@ public final class FoxgloveScene {
         if (dev.interf() == Position2d.CODE) {
             return; // position2d devices are robot frames, placed by their own pose
         }
-        if (!r.rooted) {
-            // no pose yet: the robot stands at the origin, so its devices are in the frame tree
-            r.rooted = true;
-            publish(FoxgloveNames.robotTopic(r.name, "tf"), FoxgloveSchemas.FRAME_TRANSFORM, t,
-                    FoxgloveMessages.frameTransform(t, FoxgloveNames.WORLD, r.name, 0, 0, 0, 0));
-        }
+        root(t, r);
         Placement p = r.placement(dev);
         r.framed.put(dev, Boolean.TRUE);
         publish(FoxgloveNames.robotTopic(r.name, "tf"), FoxgloveSchemas.FRAME_TRANSFORM, t,
@@ -347,6 +354,9 @@ public final class FoxgloveScene {
             double aperture = c != null && c.maxAngle() > c.minAngle() ? c.maxAngle() - c.minAngle() : DEFAULT_APERTURE;
             cones(t, r, dev, ranges, aperture);
             return;
+        }
+        if (!p.seen() && c == null && ranges.length <= MAX_RING) {
+            return; // a sonar ring whose geometry has not come yet: no place for its cones, and no scan
         }
         double start = -Math.PI / 2, end = Math.PI / 2; // a SICK LMS200's fan until the config is seen
         if (c != null) {
@@ -393,6 +403,7 @@ public final class FoxgloveScene {
         if (g == null) {
             return;
         }
+        root(t, r);
         FoxgloveMessages.Entity e = new FoxgloveMessages.Entity(t, r.name, r.name + "/" + FoxgloveNames.device(dev.interf(), dev.index()));
         for (int i = 0; i < g.bumperDef().size(); i++) {
             Bumper.Define d = g.bumperDef().get(i);
