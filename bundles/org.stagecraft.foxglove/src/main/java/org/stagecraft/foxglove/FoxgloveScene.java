@@ -238,6 +238,9 @@ public final class FoxgloveScene {
     private void geometry(long t, Robot r, Device dev, MessageBody body) {
         Placement p = switch (body) {
             case DeviceGeom g -> Placement.of(g.pose(), g.size().sl(), g.size().sw(), g.size().sh(), List.of());
+            case Ranger.Geom g when g.elementPoses().size() == 1 -> // a single-origin ranger: the scan starts at its element
+                Placement.of(compose(g.pose(), g.elementPoses().get(0)), g.size().sl(), g.size().sw(), g.size().sh(),
+                        List.of());
             case Ranger.Geom g -> Placement.of(g.pose(), g.size().sl(), g.size().sw(), g.size().sh(), g.elementPoses());
             case Sonar.Geom g -> Placement.of(new Pose3d(0, 0, 0, 0, 0, 0), 0, 0, 0, g.poses());
             case Fiducial.Geom g -> Placement.of(g.pose(), g.size().sl(), g.size().sw(), g.size().sh(), List.of());
@@ -256,6 +259,15 @@ public final class FoxgloveScene {
         } else {
             deviceFrame(t, r, dev);
         }
+    }
+
+    /** {@code local} (in the frame of {@code device}) in the device's parent frame, planar with heights added. */
+    private static Pose3d compose(Pose3d device, Pose3d local) {
+        double c = Math.cos(Placement.sane(device.pyaw())), sn = Math.sin(Placement.sane(device.pyaw()));
+        double lx = Placement.sane(local.px()), ly = Placement.sane(local.py());
+        return new Pose3d(Placement.sane(device.px()) + c * lx - sn * ly, Placement.sane(device.py()) + sn * lx + c * ly,
+                Placement.sane(device.pz()) + Placement.sane(local.pz()), 0, 0,
+                Placement.sane(device.pyaw()) + Placement.sane(local.pyaw()));
     }
 
     private void pose(long t, Robot r, Device dev, Position2d.State s) {
