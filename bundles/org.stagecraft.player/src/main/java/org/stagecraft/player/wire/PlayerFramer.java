@@ -263,7 +263,7 @@ public final class PlayerFramer {
     /**
      * Gives up the payload being assembled, if any, to free its memory: the header and the payload
      * bytes held are dropped, and the rest of that message is passed over as it arrives; framing
-     * then resumes at the header after it. Returns how many held bytes were released (0 when no
+     * then resumes at the header after it. Returns how many payload bytes were released (0 when no
      * payload was being assembled). Those bytes, and the rest of the message, are counted in
      * {@link #abandonedBytes()}.
      */
@@ -303,9 +303,12 @@ public final class PlayerFramer {
         return state == State.PAYLOAD || state == State.DISCARD ? header.size() : -1;
     }
 
-    /** Bytes of the stream this framer holds because the item they belong to is not complete yet. */
+    /**
+     * Bytes of the stream this framer holds because the item they belong to is not complete yet
+     * (a partial banner or header; or a header and the part of its payload received so far).
+     */
     public long heldBytes() {
-        return headLength + partsLength;
+        return headLength + (state == State.PAYLOAD ? MessageHeader.SIZE + partsLength : 0);
     }
 
     public long framedMessages() {

@@ -170,7 +170,11 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         this.recorder = recorder;
         this.maxQueuedBytes = maxQueuedBytes;
         this.maxHeldBytes = maxQueuedBytes / 2;
-        ObservationClasses.load(decoder);
+        try {
+            ObservationClasses.load(decoder);
+        } catch (Throwable t) {
+            // Best effort: a class that did not load now fails later, where it is reported and counted.
+        }
         this.worker = Thread.ofPlatform().daemon().name("stagecraft-spy-observer").start(this::work);
     }
 
@@ -281,7 +285,8 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private boolean admit(Inflow inflow, long n) {
         long total = queuedBytes.addAndGet(n);
         long own = inflow.queued.addAndGet(n);
-        long share = maxQueuedBytes / Math.max(1, inflows.size());
+        // never more than half for one connection: a newcomer always finds room
+        long share = maxQueuedBytes / Math.max(2, inflows.size());
         if (total + heldBytes.get() <= maxQueuedBytes && (total <= maxQueuedBytes / 2 || own <= share)) {
             return true;
         }
@@ -603,7 +608,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             case Abandoned a -> diagnostic(a.connection(), a.dir(), a.offset(), String.format(Locale.ROOT,
                     "observation of the %d-byte message at offset %d was given up after %d bytes of it: unfinished"
                             + " messages held more than %.1f MiB of the spy's observation memory; its bytes are not observed",
-                    MessageHeader.SIZE + a.size(), a.offset(), MessageHeader.SIZE + a.received(), maxHeldBytes / 1048576.0),
+                    MessageHeader.SIZE + a.size(), a.offset(), a.received(), maxHeldBytes / 1048576.0),
                     a.t());
             case Failed f -> diagnostic(f.connection(), f.dir(), f.offset(), f.text(), f.t());
             case Noticed n -> diagnostic(n.connection(), Direction.SERVER_TO_CLIENT, 0, n.notice().text(), n.t());
