@@ -113,8 +113,8 @@ public class SessionLogEditor extends EditorPart {
         status.setLayoutData(new GridData(SWT.FILL, SWT.CENTER, true, false));
         SashForm split = new SashForm(root, SWT.VERTICAL);
         split.setLayoutData(new GridData(SWT.FILL, SWT.FILL, true, true));
-        timeline = new TimelineCanvas(split, session::seek);
-        inspector = new InspectorPanel(split, columns, reader, session::position, session::select);
+        timeline = new TimelineCanvas(split, session.transport()::seek);
+        inspector = new InspectorPanel(split, columns, reader, session::position, session.transport()::select);
         split.setWeights(35, 65);
         updates = new UiThrottle(display, 50, this::showReplayState);
         densityUpdates = new UiThrottle(display, 250, this::showDensity);
@@ -234,7 +234,7 @@ public class SessionLogEditor extends EditorPart {
         long p = r.position();
         transport.show((p - l.startNanos()) / 1e9, (l.endNanos() - l.startNanos()) / 1e9, r.playing(), r.speed());
         timeline.setPosition(p);
-        inspector.follow(p, session.lastPublished());
+        inspector.follow(p, session.transport().lastPublished());
     }
 
     /** The transport bar's controls: its buttons run the editor's commands. */
@@ -250,12 +250,12 @@ public class SessionLogEditor extends EditorPart {
 
         @Override
         public void speed(double speed) {
-            session.setSpeed(speed);
+            session.transport().setSpeed(speed);
         }
 
         @Override
         public void seekSeconds(double seconds) {
-            session.seekSeconds(seconds);
+            session.transport().seekSeconds(seconds);
         }
     }
 

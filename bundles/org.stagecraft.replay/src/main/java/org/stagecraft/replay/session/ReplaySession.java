@@ -22,7 +22,8 @@ import org.stagecraft.streams.StreamBus;
  * A log file open for replay, as the Session Log editor shows it, without any UI: reads the file in
  * the background, replays it into a bus, swaps in a new reading of the file (Reload, or a log still
  * being written that grew) without losing the replay's place, follows a growing log at a bounded
- * cost, runs the timeline pass, and says in one status text what is on show and what went wrong.
+ * cost, runs the timeline pass ({@link TimelinePass}), and says in one status text what is on show and
+ * what went wrong. Its {@link #transport()} plays, steps and seeks the replayer on show.
  *
  * <p>The session belongs to its owner thread ({@link SessionThreads}): everything here is called
  * there unless it says otherwise. The log, its replayer and what was published last are readable from
@@ -43,13 +44,13 @@ public final class ReplaySession implements AutoCloseable {
     private final SessionThreads threads;
     private final FollowPace pace;
     private final SessionView view;
+    private final ReplayTransport transport;
 
     /** The log on show with its readers' hold on it, and its replayer: replaced together, on the owner thread. */
     private volatile SharedLog shared;
     private volatile Replayer replayer;
     private volatile HoldMarks holds = HoldMarks.none();
     private volatile TimelinePass pass;
-    private volatile LogMessage lastPublished;
     /** What stopped play, told by the replayer; cleared when play starts again. */
     private volatile String playFailure;
     /** Why the file could not be opened at all; why reading it again failed (the previous reading stays). */
@@ -75,6 +76,7 @@ public final class ReplaySession implements AutoCloseable {
         this.threads = threads;
         this.pace = pace;
         this.view = view;
+        this.transport = new ReplayTransport(() -> replayer, view::replayMoved);
     }
 
     // --- reading the file ----------------------------------------------------------------------
@@ -216,7 +218,7 @@ public final class ReplaySession implements AutoCloseable {
         try {
             if (last != null) {
                 r.seekAfter(last); // the same file: the reopened log has the same message at the same place
-                lastPublished = last;
+                transport.published(last);
                 return playing;
             }
         } catch (RuntimeException e) {
@@ -277,7 +279,7 @@ public final class ReplaySession implements AutoCloseable {
         @Override
         public void moved(long timeNanos, LogMessage last) {
             if (r == replayer) {
-                lastPublished = last;
+                transport.published(last);
                 view.replayMoved();
             }
         }
@@ -297,97 +299,6 @@ public final class ReplaySession implements AutoCloseable {
             if (!Objects.equals(before, playFailure)) {
                 view.statusChanged();
             }
-            view.replayMoved();
-        }
-    }
-
-    // --- transport --------------------------------------------------------------------------------
-
-    /** Moves the replay to {@code timeNanos} (a seek publishes the devices' replies from before it). */
-    public void seek(long timeNanos) {
-        Replayer r = replayer;
-        if (r != null) {
-            lastPublished = null;
-            r.seek(timeNanos);
-            view.replayMoved();
-        }
-    }
-
-    /** Moves the replay to {@code seconds} after the log's start. */
-    public void seekSeconds(double seconds) {
-        SessionLog l = log();
-        if (l != null) {
-            seek(l.startNanos() + Math.round(seconds * 1e9));
-        }
-    }
-
-    public void toStart() {
-        SessionLog l = log();
-        if (l != null) {
-            seek(l.startNanos());
-        }
-    }
-
-    /** Shows the message before the one on show (publishes it again). */
-    public void stepBack() {
-        Replayer r = replayer;
-        if (r != null) {
-            lastPublished = r.stepBack();
-            view.replayMoved();
-        }
-    }
-
-    /** Publishes the next message. */
-    public void stepForward() {
-        Replayer r = replayer;
-        if (r != null) {
-            lastPublished = r.stepForward();
-            view.replayMoved();
-        }
-    }
-
-    public void playPause() {
-        Replayer r = replayer;
-        if (r != null) {
-            if (r.playing()) {
-                r.pause();
-            } else {
-                r.play();
-            }
-            view.replayMoved();
-        }
-    }
-
-    public void setSpeed(double speed) {
-        Replayer r = replayer;
-        if (r != null) {
-            r.setSpeed(speed);
-            view.replayMoved();
-        }
-    }
-
-    /** The next faster of the {@link Speeds#offered() offered speeds}. */
-    public void faster() {
-        Replayer r = replayer;
-        if (r != null) {
-            setSpeed(Speeds.faster(r.speed()));
-        }
-    }
-
-    /** The next slower of the {@link Speeds#offered() offered speeds}. */
-    public void slower() {
-        Replayer r = replayer;
-        if (r != null) {
-            setSpeed(Speeds.slower(r.speed()));
-        }
-    }
-
-    /** A message chosen (an inspector row): the replay moves there and publishes it, so views show that moment. */
-    public void select(LogMessage m) {
-        Replayer r = replayer;
-        if (r != null) {
-            r.seekTo(m);
-            lastPublished = r.stepForward();
             view.replayMoved();
         }
     }
@@ -414,16 +325,14 @@ public final class ReplaySession implements AutoCloseable {
         return replayer;
     }
 
-    /** Where the replay is, or the log's start, or 0 before any log. Any thread. */
-    public long position() {
-        Replayer r = replayer;
-        SessionLog l = log();
-        return r != null ? r.position() : l != null ? l.startNanos() : 0;
+    /** Play, pause, step, seek and speed on the replayer on show. */
+    public ReplayTransport transport() {
+        return transport;
     }
 
-    /** The message the replay published last (by a step, a selection or play), null after a seek. Any thread. */
-    public LogMessage lastPublished() {
-        return lastPublished;
+    /** Where the replay is, or the log's start, or 0 before any log. Any thread. */
+    public long position() {
+        return transport.position(log());
     }
 
     /** The log's robot holds. Any thread. */

@@ -118,24 +118,24 @@ class ReplaySessionTest {
         assertTrue(s.alarming());
         assertTrue(view.shown.isEmpty());
         assertTrue(view.warnings.stream().anyMatch(w -> w.startsWith("cannot open " + junk)), view.warnings.toString());
-        s.stepForward(); // the transport does nothing without a log
-        s.playPause();
+        s.transport().stepForward(); // the transport does nothing without a log
+        s.transport().playPause();
         assertNull(s.replayer());
     }
 
     @Test
     void readingAgainGoesOnJustAfterTheMessageLastPublishedAndClosesTheOldLog() throws Exception {
         ReplaySession s = opened(spyLog("reloaded.mcap"), everyLook());
-        s.seek(s.log().startNanos() + 5_000_000_000L);
+        s.transport().seek(s.log().startNanos() + 5_000_000_000L);
         LogMessage last = null;
         for (int i = 0; i < 100 && (last == null || last.toStreamMessage().isEmpty()); i++) {
-            s.stepForward();
-            last = s.lastPublished();
+            s.transport().stepForward();
+            last = s.transport().lastPublished();
         }
         assertNotNull(last);
         Replayer oldReplayer = s.replayer();
         SharedLog oldShared = s.sharedLog();
-        s.setSpeed(4);
+        s.transport().setSpeed(4);
 
         s.reload();
         assertTrue(s.reading());
@@ -146,7 +146,7 @@ class ReplaySessionTest {
         assertNotSame(oldReplayer, s.replayer());
         assertEquals(2, view.shown.size());
         assertTrue(last.samePlace(s.replayer().lastPublished()), "the new replayer counts the message as published");
-        assertTrue(last.samePlace(s.lastPublished()));
+        assertTrue(last.samePlace(s.transport().lastPublished()));
         assertEquals(4, s.replayer().speed(), 1e-9, "the speed carries over");
         assertFalse(s.replayer().playing());
         assertFalse(s.statusText().contains("reading\u2026"), s.statusText());
@@ -157,8 +157,8 @@ class ReplaySessionTest {
         try (Subscription sub = bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(1 << 12), received::add)) {
             LogMessage stepped = null;
             for (int i = 0; i < 100 && (stepped == null || stepped.toStreamMessage().isEmpty()); i++) {
-                s.stepForward();
-                stepped = s.lastPublished();
+                s.transport().stepForward();
+                stepped = s.transport().lastPublished();
             }
             assertTrue(expected.samePlace(stepped), "the next step publishes the message after it: " + stepped);
         }
@@ -167,8 +167,8 @@ class ReplaySessionTest {
     @Test
     void playCarriesOverToTheNewReading() throws Exception {
         ReplaySession s = opened(spyLog("playing.mcap"), everyLook());
-        s.setSpeed(0.1); // slow: the log does not end while it is read again
-        s.playPause();
+        s.transport().setSpeed(0.1); // slow: the log does not end while it is read again
+        s.transport().playPause();
         assertTrue(s.replayer().playing());
         Replayer old = s.replayer();
         s.reload();
@@ -177,7 +177,7 @@ class ReplaySessionTest {
         assertFalse(old.playing(), "the old replayer stopped");
         assertTrue(s.replayer().playing(), "the new one plays on");
         assertEquals(0.1, s.replayer().speed(), 1e-9);
-        s.playPause();
+        s.transport().playPause();
         assertFalse(s.replayer().playing());
     }
 
@@ -249,18 +249,18 @@ class ReplaySessionTest {
         SessionLog log = s.log();
         LinkedBlockingQueue<StreamMessage> received = new LinkedBlockingQueue<>();
         try (Subscription sub = bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(1 << 14), received::add)) {
-            s.seekSeconds(10);
+            s.transport().seekSeconds(10);
             assertEquals(log.startNanos() + 10_000_000_000L, s.position());
-            assertNull(s.lastPublished(), "a seek publishes no message of its own");
+            assertNull(s.transport().lastPublished(), "a seek publishes no message of its own");
             int moves = view.moves.get();
-            s.stepForward();
+            s.transport().stepForward();
             assertTrue(view.moves.get() > moves, "the view is told");
-            LogMessage one = s.lastPublished();
+            LogMessage one = s.transport().lastPublished();
             assertNotNull(one);
-            s.stepForward();
-            LogMessage two = s.lastPublished();
-            s.stepBack();
-            assertTrue(one.samePlace(s.lastPublished()), "a step back shows the entry before");
+            s.transport().stepForward();
+            LogMessage two = s.transport().lastPublished();
+            s.transport().stepBack();
+            assertTrue(one.samePlace(s.transport().lastPublished()), "a step back shows the entry before");
             assertNotNull(two);
 
             // a message chosen (an inspector row) is published
@@ -272,23 +272,23 @@ class ReplaySessionTest {
                 }
             }
             received.clear();
-            s.select(chosen);
-            assertTrue(chosen.samePlace(s.lastPublished()));
+            s.transport().select(chosen);
+            assertTrue(chosen.samePlace(s.transport().lastPublished()));
             StreamMessage want = chosen.toStreamMessage().orElseThrow();
             threads.runUntil(() -> received.stream().anyMatch(m -> m.key().equals(want.key()) && m.timeNanos() == want.timeNanos()),
                     5_000, "the chosen message on the bus");
 
-            s.toStart();
+            s.transport().toStart();
             assertEquals(log.startNanos(), s.position());
         }
-        s.faster();
+        s.transport().faster();
         assertEquals(2, s.replayer().speed(), 1e-9);
-        s.slower();
-        s.slower();
+        s.transport().slower();
+        s.transport().slower();
         assertEquals(0.5, s.replayer().speed(), 1e-9);
-        s.playPause();
+        s.transport().playPause();
         assertTrue(s.replayer().playing());
-        s.playPause();
+        s.transport().playPause();
         assertFalse(s.replayer().playing());
     }
 
@@ -297,14 +297,14 @@ class ReplaySessionTest {
         Path file = spyLog("failing.mcap");
         ReplaySession s = opened(file, everyLook());
         threads.runUntil(s::timelineComplete, WAIT, "the timeline pass");
-        s.seek(s.log().startNanos() + (s.log().endNanos() - s.log().startNanos()) / 2);
-        s.stepForward(); // the cursor holds the chunk it is in; the ones after it are read as play goes on
+        s.transport().seek(s.log().startNanos() + (s.log().endNanos() - s.log().startNanos()) / 2);
+        s.transport().stepForward(); // the cursor holds the chunk it is in; the ones after it are read as play goes on
         try (FileChannel ch = FileChannel.open(file, StandardOpenOption.WRITE)) {
             ch.truncate(ch.size() / 4); // the file is cut under the open log
         }
         assertFalse(s.alarming());
-        s.setSpeed(16);
-        s.playPause();
+        s.transport().setSpeed(16);
+        s.transport().playPause();
         threads.runUntil(() -> s.statusText().contains("Replay stopped: "), WAIT, "the failure in the status: " + s.statusText());
         Exception failure = s.replayer().failure();
         assertNotNull(failure);

@@ -13,12 +13,12 @@ import org.stagecraft.replay.ui.SessionLogEditor;
  * do the same.
  */
 public enum EditorCommand {
-    TO_START("toStart", e -> e.session().toStart()),
-    STEP_BACK("stepBack", e -> e.session().stepBack()),
-    PLAY_PAUSE("playPause", e -> e.session().playPause()),
-    STEP_FORWARD("stepForward", e -> e.session().stepForward()),
-    FASTER("faster", e -> e.session().faster()),
-    SLOWER("slower", e -> e.session().slower()),
+    TO_START("toStart", e -> e.session().transport().toStart()),
+    STEP_BACK("stepBack", e -> e.session().transport().stepBack()),
+    PLAY_PAUSE("playPause", e -> e.session().transport().playPause()),
+    STEP_FORWARD("stepForward", e -> e.session().transport().stepForward()),
+    FASTER("faster", e -> e.session().transport().faster()),
+    SLOWER("slower", e -> e.session().transport().slower()),
     RELOAD("reload", SessionLogEditor::reload),
     SHOW_IN_ROBOT_VIEW("showInRobotView", SessionLogEditor::showInRobotView),
     PLOT("plot", SessionLogEditor::showPlot),

@@ -61,7 +61,7 @@ class EditorCommandsTest {
         SessionLogEditor e = SessionLogEditorTest.open(page, TestLogs.spyLog("commands.mcap", 64 << 10));
         SessionLogEditorTest.waitForTimeline(e);
         long ten = e.log().startNanos() + 10_000_000_000L;
-        e.session().seek(ten);
+        e.session().transport().seek(ten);
         LinkedBlockingQueue<StreamMessage> received = new LinkedBlockingQueue<>();
         try (Subscription s = e.bus().subscribe(StreamPattern.any(), DeliveryPolicy.lossless(1 << 16), received::add)) {
             LogMessage stepped = null;
