@@ -8,6 +8,7 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 
 import org.stagecraft.player.codec.CodecRegistry;
@@ -65,7 +66,7 @@ public final class RobotSession implements AutoCloseable {
 
     private RobotSession(SessionConfig config, CodecRegistry codecs, ToolListener listener) {
         this.config = config;
-        this.codecs = java.util.Objects.requireNonNull(codecs, "codecs");
+        this.codecs = Objects.requireNonNull(codecs, "codecs");
         this.listener = listener == null ? ToolListener.NONE : listener;
     }
 
