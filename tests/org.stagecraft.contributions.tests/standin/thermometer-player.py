@@ -39,7 +39,7 @@ def serve(sock, messages):
         if sock.recv(65536):
             for m in messages:
                 sock.sendall(m)
-                time.sleep(PERIOD)  # the driver's rate: each reading at a time of its own
+                time.sleep(PERIOD)  # the driver's rate: readings spread over time (a busy machine may still join two)
         while sock.recv(65536):
             pass
     except OSError:
