@@ -30,7 +30,7 @@ import org.stagecraft.replay.analysis.SeriesText;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.replay.ui.internal.PlotCanvas;
-import org.stagecraft.replay.ui.internal.SharedLog;
+import org.stagecraft.replay.session.SharedLog;
 
 /**
  * Plots numeric fields of a Session Log over time: several series, each a stream and a field path
