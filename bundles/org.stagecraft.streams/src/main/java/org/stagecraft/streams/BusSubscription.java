@@ -1,5 +1,7 @@
 package org.stagecraft.streams;
 
+import java.util.HashSet;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -23,6 +25,12 @@ final class BusSubscription implements Subscription {
     private final AtomicInteger size = new AtomicInteger();
     /** Latest-value: the newest undelivered message per stream. */
     private final ConcurrentHashMap<StreamKey, StreamMessage> latest;
+    /** Latest-value: releases, told after the pending messages (a lossless FIFO carries them in line). */
+    private final ConcurrentLinkedQueue<Release> releases;
+
+    /** A release in the buffer: never counted against the capacity, nor as delivered or dropped. */
+    private record Release(String address, Set<StreamKey> streams) {
+    }
 
     private final AtomicBoolean scheduled = new AtomicBoolean();
     private final LongAdder delivered = new LongAdder();
@@ -40,6 +48,7 @@ final class BusSubscription implements Subscription {
         this.capacity = policy.capacity();
         this.fifo = lossless ? new ConcurrentLinkedQueue<>() : null;
         this.latest = lossless ? null : new ConcurrentHashMap<>();
+        this.releases = lossless ? null : new ConcurrentLinkedQueue<>();
     }
 
     /** Called by publishers: buffer (or drop and count) and make sure a drain task is pending. */
@@ -56,6 +65,30 @@ final class BusSubscription implements Subscription {
             fifo.offer(m);
         } else if (latest.put(m.key(), m) != null) {
             dropped.increment(); // superseded before delivery
+        }
+        schedule();
+    }
+
+    /** Called by {@link StreamBus#release}: buffers the release behind the messages offered before it. */
+    void offerRelease(String address, Set<StreamKey> released) {
+        if (closed) {
+            return;
+        }
+        Set<StreamKey> mine = new HashSet<>();
+        for (StreamKey k : released) {
+            if (pattern.matches(k)) {
+                mine.add(k);
+            }
+        }
+        if (mine.isEmpty()) {
+            return;
+        }
+        Release r = new Release(address, Set.copyOf(mine));
+        if (lossless) {
+            size.incrementAndGet();
+            fifo.offer(new StreamMessage(mine.iterator().next(), 0, r));
+        } else {
+            releases.offer(r);
         }
         schedule();
     }
@@ -104,7 +137,11 @@ final class BusSubscription implements Subscription {
         StreamMessage m;
         while (n < budget && !closed && (m = fifo.poll()) != null) {
             size.decrementAndGet();
-            deliver(m);
+            if (m.payload() instanceof Release r) {
+                tellReleased(r);
+            } else {
+                deliver(m);
+            }
             n++;
         }
         return n;
@@ -123,7 +160,20 @@ final class BusSubscription implements Subscription {
                 n++;
             }
         }
+        for (Release r = releases.poll(); r != null && !closed; r = releases.poll()) {
+            tellReleased(r);
+            n++;
+        }
         return n;
+    }
+
+    private void tellReleased(Release r) {
+        try {
+            consumer.released(r.address(), r.streams());
+        } catch (Throwable t) {
+            failures.increment();
+            lastFailure = t;
+        }
     }
 
     private void deliver(StreamMessage m) {
@@ -143,16 +193,19 @@ final class BusSubscription implements Subscription {
     }
 
     private boolean isEmpty() {
-        return lossless ? fifo.isEmpty() : latest.isEmpty();
+        return lossless ? fifo.isEmpty() : latest.isEmpty() && releases.isEmpty();
     }
 
     private void discard() {
         if (lossless) {
-            while (fifo.poll() != null) {
+            for (StreamMessage m = fifo.poll(); m != null; m = fifo.poll()) {
                 size.decrementAndGet();
-                dropped.increment();
+                if (!(m.payload() instanceof Release)) {
+                    dropped.increment();
+                }
             }
         } else {
+            releases.clear();
             for (StreamKey k : latest.keySet()) {
                 if (latest.remove(k) != null) {
                     dropped.increment();

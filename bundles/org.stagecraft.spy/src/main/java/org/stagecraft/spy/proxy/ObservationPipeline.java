@@ -267,6 +267,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                     }
                 }
                 record(r -> r.closed(cl.connection(), cl.t(), cl.reason()));
+                bus.release(cl.connection().client()); // its streams end here: the bus forgets them (issue 17)
             }
             case HoldDone h -> {
                 record(r -> r.hold(h.action().toEntry(h.t())));
