@@ -41,8 +41,7 @@ public final class SessionFramer {
     /** Feeds bytes one recv() returned on a stream at time t. */
     public void chunk(double t, StreamId stream, byte[] data, int off, int len) {
         now = t;
-        Lane lane = lane(stream);
-        lane.accept(data, off, len);
+        connection(stream).accept(stream.dir(), data, off, len);
     }
 
     public void chunk(double t, StreamId stream, byte[] data) {
@@ -81,7 +80,7 @@ public final class SessionFramer {
         return connections.size();
     }
 
-    private Lane lane(StreamId stream) {
+    private Connection connection(StreamId stream) {
         Connection c = connections.get(stream.conn());
         if (c == null) {
             c = new Connection(stream.conn(), stream.port());
@@ -89,7 +88,7 @@ public final class SessionFramer {
         } else if (c.port != stream.port()) {
             c = c.other(stream.port());
         }
-        return c.lane(stream.dir());
+        return c;
     }
 
     /** Convenience for callers that know the direction by label. */
@@ -97,10 +96,18 @@ public final class SessionFramer {
         return new StreamId(conn, port, Direction.fromLabel(dirLabel));
     }
 
-    /** Both directions of one connection (conn, port). */
+    /**
+     * Both directions of one connection (conn, port). A direction is either active (a {@link Lane} with
+     * its framer) or parked: then only its stream offset and the bytes it has not reported yet (at most
+     * {@link #PARK_MAX_BYTES}) are kept here, in fields, so a parked connection costs one small object.
+     */
     private final class Connection {
         final int conn;
         final int port;
+        long clientToServerAt;
+        long serverToClientAt;
+        byte[] clientToServerHeld;
+        byte[] serverToClientHeld;
         Lane clientToServer;
         Lane serverToClient;
         /** The same connection number with another port (only in malformed recordings). */
@@ -111,17 +118,35 @@ public final class SessionFramer {
             this.port = port;
         }
 
-        Lane lane(Direction dir) {
+        void accept(Direction dir, byte[] data, int off, int len) {
+            boolean c2s = dir == Direction.CLIENT_TO_SERVER;
+            Lane lane = c2s ? clientToServer : serverToClient;
+            if (lane == null) {
+                lane = c2s ? new Lane(this, dir, clientToServerAt, clientToServerHeld)
+                        : new Lane(this, dir, serverToClientAt, serverToClientHeld);
+                setActive(dir, lane);
+            }
+            lane.accept(data, off, len);
+        }
+
+        /** The lane stands at an item start holding at most a partial header: keep its place and bytes, drop it. */
+        void park(Lane lane, long at, byte[] held) {
+            if (lane.dir == Direction.CLIENT_TO_SERVER) {
+                clientToServerAt = at;
+                clientToServerHeld = held;
+            } else {
+                serverToClientAt = at;
+                serverToClientHeld = held;
+            }
+            setActive(lane.dir, null);
+        }
+
+        private void setActive(Direction dir, Lane lane) {
             if (dir == Direction.CLIENT_TO_SERVER) {
-                if (clientToServer == null) {
-                    clientToServer = new Lane(this, dir);
-                }
-                return clientToServer;
+                clientToServer = lane;
+            } else {
+                serverToClient = lane;
             }
-            if (serverToClient == null) {
-                serverToClient = new Lane(this, dir);
-            }
-            return serverToClient;
         }
 
         Connection other(int otherPort) {
@@ -138,21 +163,28 @@ public final class SessionFramer {
             return o;
         }
 
+        /** Ends both directions: whatever they hold is reported as unframed. */
         void end() {
-            if (clientToServer != null) {
-                clientToServer.end();
-            }
-            if (serverToClient != null) {
-                serverToClient.end();
-            }
+            end(Direction.CLIENT_TO_SERVER, clientToServer, clientToServerAt, clientToServerHeld);
+            end(Direction.SERVER_TO_CLIENT, serverToClient, serverToClientAt, serverToClientHeld);
+            clientToServer = serverToClient = null;
+            clientToServerHeld = serverToClientHeld = null;
             if (others != null) {
                 others.forEach(Connection::end);
             }
         }
 
+        private void end(Direction dir, Lane active, long at, byte[] held) {
+            if (active == null && held != null) {
+                active = new Lane(this, dir, at, held);
+            }
+            if (active != null) {
+                active.end();
+            }
+        }
+
         int activeFramers() {
-            int n = (clientToServer != null && clientToServer.framer != null ? 1 : 0)
-                    + (serverToClient != null && serverToClient.framer != null ? 1 : 0);
+            int n = (clientToServer != null ? 1 : 0) + (serverToClient != null ? 1 : 0);
             if (others != null) {
                 for (Connection o : others) {
                     n += o.activeFramers();
@@ -163,83 +195,70 @@ public final class SessionFramer {
     }
 
     /**
-     * One direction: a framer while it is assembling something bigger than {@link #PARK_MAX_BYTES}, else
-     * only its offset and the few bytes not yet reported. Every byte fed is reported by exactly one
-     * event, in order; after a banner or a message the framer stands at the start of the next header,
-     * so it is fully described by the bytes it received since (a header is judged only once whole).
-     * A fresh framer fed those bytes again is in the same state. After unframed bytes the framer may
-     * be in the middle of skipping garbage, so it is kept until the next message.
+     * One direction while it has a framer: from a chunk that finds it parked until it stands at an item
+     * start again holding at most {@link #PARK_MAX_BYTES} unreported bytes. Every byte fed is reported by
+     * exactly one event, in order; after a banner or a message the framer stands at the start of the
+     * next header, so it is fully described by the bytes it received since (a header is judged only once
+     * whole): a fresh framer fed those bytes again is in the same state. After unframed bytes the framer
+     * may be in the middle of skipping garbage, so it is kept until the next message.
      */
     private final class Lane implements Consumer<WireEvent> {
         final Connection owner;
         final Direction dir;
-        PlayerFramer framer;
-        /** Bytes fed but not yet reported while parked (null: none). */
-        byte[] leftover;
-        /** Stream offset at which the current framer started (its offsets are relative to it). */
-        long base;
+        final PlayerFramer framer;
+        /** Stream offset at which this framer started (its offsets are relative to it). */
+        final long base;
         long fed;
         long reported;
         /** The last event was a banner or a message (or there was none): the framer stands at an item start. */
         boolean atItem = true;
+        /** The bytes fed again at the start (the parked direction's held bytes), or null. */
+        byte[] refed;
 
-        Lane(Connection owner, Direction dir) {
+        /** A framer for a direction parked at stream offset {@code at} with {@code held} bytes not yet reported. */
+        Lane(Connection owner, Direction dir, long at, byte[] held) {
             this.owner = owner;
             this.dir = dir;
+            this.base = at;
+            this.fed = at;
+            this.reported = at;
+            // a new server stream starts with the ident; anything else stands at a message header, where a
+            // framer for the client's direction starts
+            this.framer = new PlayerFramer(at == 0 ? dir : Direction.CLIENT_TO_SERVER, this);
+            if (held != null) {
+                refed = held;
+                fed += held.length;
+                framer.accept(held, 0, held.length);
+            }
         }
 
         void accept(byte[] data, int off, int len) {
-            byte[] refed = framer == null ? revive() : null;
             fed += len;
             framer.accept(data, off, len);
-            park(refed, data, off, len);
-        }
-
-        /** A framer for a parked lane, given the bytes it had not reported; returns those bytes. */
-        private byte[] revive() {
-            // a new server stream starts with the ident; anything else stands at a message header, where
-            // a framer for the client's direction starts
-            Direction start = reported == 0 ? dir : Direction.CLIENT_TO_SERVER;
-            base = reported;
-            framer = new PlayerFramer(start, this);
-            byte[] l = leftover;
-            leftover = null;
-            if (l != null) {
-                framer.accept(l, 0, l.length);
-            }
-            return l;
-        }
-
-        /** Drops the framer if what it holds fits in a few bytes kept here (see the class comment). */
-        private void park(byte[] refed, byte[] data, int off, int len) {
             long unreported = fed - reported;
             if (!atItem || unreported > PARK_MAX_BYTES) {
+                refed = null; // kept: the bytes held may now begin before this chunk
                 return;
             }
             int u = (int) unreported;
             int fromRefed = Math.max(0, u - len);
             if (fromRefed > (refed == null ? 0 : refed.length)) {
-                return; // the held bytes began in chunks this framer was fed while it was not parked
+                refed = null;
+                return; // the held bytes began in chunks fed since the framer was revived
             }
+            byte[] held = null;
             if (u > 0) {
-                byte[] keep = new byte[u];
+                held = new byte[u];
                 if (fromRefed > 0) {
-                    System.arraycopy(refed, refed.length - fromRefed, keep, 0, fromRefed);
+                    System.arraycopy(refed, refed.length - fromRefed, held, 0, fromRefed);
                 }
-                System.arraycopy(data, off + len - (u - fromRefed), keep, fromRefed, u - fromRefed);
-                leftover = keep;
+                System.arraycopy(data, off + len - (u - fromRefed), held, fromRefed, u - fromRefed);
             }
-            framer = null;
+            owner.park(this, reported, held);
         }
 
         void end() {
-            if (framer == null && leftover != null) {
-                revive();
-            }
-            if (framer != null) {
-                framer.end();
-                framer = null;
-            }
+            framer.end();
         }
 
         @Override
