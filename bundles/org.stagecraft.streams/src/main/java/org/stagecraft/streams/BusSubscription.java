@@ -19,6 +19,8 @@ final class BusSubscription implements Subscription {
     private final StreamConsumer consumer;
     private final boolean lossless;
     private final int capacity;
+    /** Whether the consumer does anything with releases: a lambda (most views) cannot, and is never queued any. */
+    private final boolean wantsReleases;
 
     /** Lossless: FIFO with an explicit size, never more than {@code capacity} messages. */
     private final ConcurrentLinkedQueue<StreamMessage> fifo;
@@ -46,6 +48,7 @@ final class BusSubscription implements Subscription {
         this.consumer = consumer;
         this.lossless = policy.isLossless();
         this.capacity = policy.capacity();
+        this.wantsReleases = overridesReleased(consumer);
         this.fifo = lossless ? new ConcurrentLinkedQueue<>() : null;
         this.latest = lossless ? null : new ConcurrentHashMap<>();
         this.releases = lossless ? null : new ConcurrentLinkedQueue<>();
@@ -71,7 +74,7 @@ final class BusSubscription implements Subscription {
 
     /** Called by {@link StreamBus#release}: buffers the release behind the messages offered before it. */
     void offerRelease(String address, Set<StreamKey> released) {
-        if (closed) {
+        if (closed || !wantsReleases) {
             return;
         }
         Set<StreamKey> mine = new HashSet<>();
@@ -91,6 +94,19 @@ final class BusSubscription implements Subscription {
             releases.offer(r);
         }
         schedule();
+    }
+
+    private static boolean overridesReleased(StreamConsumer consumer) {
+        try {
+            return consumer.getClass().getMethod("released", String.class, Set.class).getDeclaringClass() != StreamConsumer.class;
+        } catch (NoSuchMethodException | SecurityException e) {
+            return true; // cannot tell: tell it
+        }
+    }
+
+    /** Releases waiting for a latest-value consumer (for tests: they are only queued for consumers that want them). */
+    int pendingReleases() {
+        return lossless ? 0 : releases.size();
     }
 
     private void schedule() {

@@ -193,4 +193,27 @@ class StreamReleaseTest {
             delivery.shutdownNow();
         }
     }
+
+    @Test
+    void aBlockedViewThatIgnoresReleasesQueuesNoneOfThem() {
+        ExecutorService delivery = Executors.newSingleThreadExecutor();
+        try (StreamBus bus = new StreamBus(delivery)) {
+            Streams.Gate gate = new Streams.Gate();
+            Subscription view = bus.subscribe(StreamPattern.any(), DeliveryPolicy.latestValue(), m -> gate.pass());
+            bus.publish(msg(new StreamKey("x:1", "y:1", 1, 0, 0, 0), "blocker"));
+            await(gate.entered); // the view is stuck while a thousand connections come and go
+            for (int i = 0; i < 1000; i++) {
+                connection(client(i)).forEach(k -> bus.publish(msg(k, 0)));
+                bus.release(client(i));
+            }
+            BusSubscription impl = (BusSubscription) view;
+            assertEquals(0, impl.pendingReleases(), "a lambda consumer cannot act on releases: none is kept for it");
+            assertEquals(connection(client(0)).size() * 1000, impl.pending() + view.dropped(),
+                    "its buffered messages are still one per stream, the rest counted as dropped");
+            gate.release.countDown();
+            Streams.flush(delivery);
+        } finally {
+            delivery.shutdownNow();
+        }
+    }
 }

@@ -98,20 +98,13 @@ final class TraceLines implements Closeable {
     }
 
     private boolean fill() throws IOException {
-        int n = in.read(chunk, 0, chunk.length);
-        if (n <= 0) {
-            eof = n < 0;
-            if (n == 0) { // an InputStream should block instead; read one byte to make progress
-                int b = in.read();
-                if (b < 0) {
-                    eof = true;
-                    return false;
-                }
-                chunk[0] = (byte) b;
-                n = 1;
-            } else {
-                return false;
-            }
+        int n;
+        do {
+            n = in.read(chunk, 0, chunk.length); // 0 only from a stream that breaks read()'s contract
+        } while (n == 0);
+        if (n < 0) {
+            eof = true;
+            return false;
         }
         chunkPos = 0;
         chunkEnd = n;
