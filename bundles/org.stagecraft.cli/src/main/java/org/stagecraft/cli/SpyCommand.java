@@ -22,6 +22,7 @@ import org.stagecraft.spy.proxy.LogRecorder;
 import org.stagecraft.spy.proxy.NetworkSpy;
 import org.stagecraft.spy.proxy.ObservationPipeline;
 import org.stagecraft.spy.proxy.Route;
+import org.stagecraft.spy.proxy.SpyListener;
 import org.stagecraft.spy.proxy.WireObserver;
 import org.stagecraft.streams.StreamBus;
 
@@ -89,8 +90,9 @@ final class SpyCommand {
      */
     int serve(Options o, PrintStream err, CountDownLatch stop, boolean tty) {
         NetworkSpy spy = new NetworkSpy(o.routes(), WireObserver.NONE).upstreamGrace(o.upstreamGrace());
-        // Player refusing is said at once, on its own line (after the live line on a terminal).
-        spy.addListener(n -> err.print((tty ? "\n" : "") + "stagecraft spy: " + n.text() + (tty ? "" : "\n")));
+        // Player refusing, or observation failing, is said at once, on its own line (after the live line on a terminal).
+        SpyListener say = n -> err.print((tty ? "\n" : "") + "stagecraft spy: " + n.text() + (tty ? "" : "\n"));
+        spy.addListener(say);
         // Bind first: a port in use must not leave an empty log behind (or truncate an old one).
         try {
             spy.bind();
@@ -115,6 +117,7 @@ final class SpyCommand {
         StreamBus bus = new StreamBus();
         ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder,
                 OBSERVER_QUEUE_BYTES);
+        pipeline.addListener(say);
         spy.observer(pipeline);
         try {
             spy.start();
@@ -225,10 +228,10 @@ final class SpyCommand {
             long messages = pipeline.messages();
             long bytes = spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT);
             String line = String.format(Locale.ROOT,
-                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s",
+                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s%s",
                     spy.openConnections(), spy.totalConnections(), (messages - lastMessages) / secs,
                     (bytes - lastBytes) / secs / 1000, pipeline.decodeProblems(), pipeline.unframedBytes(),
-                    pipeline.droppedBytes(), pipeline.recorderError() != null ? " | " + pipeline.recorderError() : "");
+                    pipeline.droppedBytes(), failures(" | "), pipeline.recorderError() != null ? " | " + pipeline.recorderError() : "");
             lastMessages = messages;
             lastBytes = bytes;
             lastNanos = now;
@@ -238,11 +241,30 @@ final class SpyCommand {
         String totals() {
             return String.format(Locale.ROOT,
                     "%d connections, %d messages, %d bytes forwarded, %d undecodable messages, %d unframed bytes,"
-                            + " %d bytes unobserved%s",
+                            + " %d bytes unobserved%s%s",
                     spy.totalConnections(), pipeline.messages(),
                     spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT),
-                    pipeline.decodeProblems(), pipeline.unframedBytes(), pipeline.droppedBytes(),
+                    pipeline.decodeProblems(), pipeline.unframedBytes(), pipeline.droppedBytes(), failures("; "),
                     pipeline.recorderError() != null ? "; " + pipeline.recorderError() : "");
+        }
+
+        /**
+         * What went wrong on the observation side, if anything: messages given up to bound memory,
+         * failures of observation (the first one named), failures of the relay's observer calls.
+         */
+        private String failures(String sep) {
+            StringBuilder b = new StringBuilder();
+            if (pipeline.abandonedMessages() > 0) {
+                b.append(sep).append(pipeline.abandonedMessages()).append(" unfinished messages given up (memory bound)");
+            }
+            long failed = pipeline.internalErrors() + spy.observerFailures();
+            if (failed > 0) {
+                b.append(sep).append(failed).append(" observation failures");
+                if (pipeline.failure() != null) {
+                    b.append(", the first: ").append(pipeline.failure());
+                }
+            }
+            return b.toString();
         }
     }
 }

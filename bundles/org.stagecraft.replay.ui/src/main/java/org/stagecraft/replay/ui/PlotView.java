@@ -154,7 +154,7 @@ public class PlotView extends ViewPart {
     }
 
     private org.stagecraft.player.codec.CodecRegistry editorColumnsRegistry() {
-        return editor != null ? editor.columns().registry() : org.stagecraft.core.codec.DecoderExtensionRegistry.get();
+        return editor != null ? editor.columns().registry() : org.stagecraft.core.extensions.Contributions.workbench().codecs();
     }
 
     /** Adds a series by its text ({@link SeriesText}). @throws IllegalArgumentException when it does not parse */

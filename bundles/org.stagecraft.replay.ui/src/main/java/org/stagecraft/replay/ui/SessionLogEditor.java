@@ -28,9 +28,9 @@ import org.eclipse.ui.IEditorSite;
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PartInitException;
 import org.eclipse.ui.part.EditorPart;
-import org.stagecraft.core.codec.DecoderExtensionRegistry;
 import org.stagecraft.core.streams.BusSources;
-import org.stagecraft.core.streams.StreamProcessorExtensionRegistry;
+import org.stagecraft.core.extensions.Contributions;
+import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.replay.analysis.MessageColumns;
 import org.stagecraft.replay.analysis.TimelineDensity;
 import org.stagecraft.replay.log.LogMessage;
@@ -81,7 +81,7 @@ public class SessionLogEditor extends EditorPart {
     private static final int FOLLOW_FACTOR = 4;
 
     private Path file;
-    private final MessageColumns columns = new MessageColumns(DecoderExtensionRegistry.get());
+    private final MessageColumns columns = new MessageColumns(Contributions.workbench().codecs());
     private final StreamBus bus = new StreamBus();
     private final ExecutorService reader = Executors.newSingleThreadExecutor(r -> {
         Thread t = new Thread(r, "Session Log inspector reader");
@@ -155,7 +155,7 @@ public class SessionLogEditor extends EditorPart {
         statusUpdates = new UiThrottle(root.getDisplay(), 100, this::showStatus);
 
         SharedWorld.of(bus); // the world model listens from the first message: geometry replies come once
-        processors = StreamProcessorExtensionRegistry.startAll(bus); // derived streams, as on the live bus
+        processors = Contributions.workbench().startProcessors(bus); // derived streams, as on the live bus
         registerSource();
         transport.setEnabled(false);
         startOpen(false);
@@ -256,7 +256,7 @@ public class SessionLogEditor extends EditorPart {
         Display display = status.getDisplay();
         Job job = Job.create("Reading " + file.getFileName(), (IProgressMonitor monitor) -> {
             long started = System.nanoTime();
-            Opened o = Opened.of(file, bus);
+            Opened o = Opened.of(file, columns.registry(), bus);
             long cost = System.nanoTime() - started;
             try {
                 display.asyncExec(() -> swapIn(g, o, cost));
@@ -273,10 +273,10 @@ public class SessionLogEditor extends EditorPart {
 
     /** What a background open produced: the log and its replayer, or why there is none. */
     private record Opened(SharedLog shared, Replayer replayer, Exception error) {
-        static Opened of(Path file, StreamBus bus) {
+        static Opened of(Path file, CodecRegistry codecs, StreamBus bus) {
             SessionLog l = null;
             try {
-                l = SessionLogs.open(file);
+                l = SessionLogs.open(file, codecs);
                 SharedLog s = new SharedLog(l, (closed, e) -> LOG.warn("Session Log: closing " + closed.path() + ": " + e));
                 return new Opened(s, new Replayer(l, bus, ReplayClock.system()), null);
             } catch (IOException | RuntimeException e) {
