@@ -36,6 +36,10 @@ final class DecodeCommand {
             flushQuietly(w);
             err.println("stagecraft decode: " + e.getMessage());
             return 1;
+        } catch (RuntimeException | OutOfMemoryError e) {
+            flushQuietly(w);
+            err.println("stagecraft decode: " + CommandFailure.describe(file, e));
+            return 1;
         }
     }
 

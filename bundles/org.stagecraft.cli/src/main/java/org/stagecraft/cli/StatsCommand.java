@@ -65,6 +65,9 @@ final class StatsCommand {
         } catch (IOException e) {
             err.println("stagecraft stats: " + e.getMessage());
             return 1;
+        } catch (RuntimeException | OutOfMemoryError e) {
+            err.println("stagecraft stats: " + CommandFailure.describe(file, e));
+            return 1;
         }
         out.printf("%-4s %-12s %-10s %-18s %10s %12s%n", "dir", "interface", "type", "subtype", "messages", "bytes");
         for (Map.Entry<Key, Tally> en : counts.entrySet()) {

@@ -1,5 +1,7 @@
 package org.stagecraft.streams;
 
+import java.util.HashSet;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -17,12 +19,20 @@ final class BusSubscription implements Subscription {
     private final StreamConsumer consumer;
     private final boolean lossless;
     private final int capacity;
+    /** Whether the consumer does anything with releases: a lambda (most views) cannot, and is never queued any. */
+    private final boolean wantsReleases;
 
     /** Lossless: FIFO with an explicit size, never more than {@code capacity} messages. */
     private final ConcurrentLinkedQueue<StreamMessage> fifo;
     private final AtomicInteger size = new AtomicInteger();
     /** Latest-value: the newest undelivered message per stream. */
     private final ConcurrentHashMap<StreamKey, StreamMessage> latest;
+    /** Latest-value: releases, told after the pending messages (a lossless FIFO carries them in line). */
+    private final ConcurrentLinkedQueue<Release> releases;
+
+    /** A release in the buffer: never counted against the capacity, nor as delivered or dropped. */
+    private record Release(String address, Set<StreamKey> streams) {
+    }
 
     private final AtomicBoolean scheduled = new AtomicBoolean();
     private final LongAdder delivered = new LongAdder();
@@ -38,8 +48,10 @@ final class BusSubscription implements Subscription {
         this.consumer = consumer;
         this.lossless = policy.isLossless();
         this.capacity = policy.capacity();
+        this.wantsReleases = overridesReleased(consumer);
         this.fifo = lossless ? new ConcurrentLinkedQueue<>() : null;
         this.latest = lossless ? null : new ConcurrentHashMap<>();
+        this.releases = lossless ? null : new ConcurrentLinkedQueue<>();
     }
 
     /** Called by publishers: buffer (or drop and count) and make sure a drain task is pending. */
@@ -58,6 +70,43 @@ final class BusSubscription implements Subscription {
             dropped.increment(); // superseded before delivery
         }
         schedule();
+    }
+
+    /** Called by {@link StreamBus#release}: buffers the release behind the messages offered before it. */
+    void offerRelease(String address, Set<StreamKey> released) {
+        if (closed || !wantsReleases) {
+            return;
+        }
+        Set<StreamKey> mine = new HashSet<>();
+        for (StreamKey k : released) {
+            if (pattern.matches(k)) {
+                mine.add(k);
+            }
+        }
+        if (mine.isEmpty()) {
+            return;
+        }
+        Release r = new Release(address, Set.copyOf(mine));
+        if (lossless) {
+            size.incrementAndGet();
+            fifo.offer(new StreamMessage(mine.iterator().next(), 0, r));
+        } else {
+            releases.offer(r);
+        }
+        schedule();
+    }
+
+    private static boolean overridesReleased(StreamConsumer consumer) {
+        try {
+            return consumer.getClass().getMethod("released", String.class, Set.class).getDeclaringClass() != StreamConsumer.class;
+        } catch (NoSuchMethodException | SecurityException e) {
+            return true; // cannot tell: tell it
+        }
+    }
+
+    /** Releases waiting for a latest-value consumer (for tests: they are only queued for consumers that want them). */
+    int pendingReleases() {
+        return lossless ? 0 : releases.size();
     }
 
     private void schedule() {
@@ -104,7 +153,11 @@ final class BusSubscription implements Subscription {
         StreamMessage m;
         while (n < budget && !closed && (m = fifo.poll()) != null) {
             size.decrementAndGet();
-            deliver(m);
+            if (m.payload() instanceof Release r) {
+                tellReleased(r);
+            } else {
+                deliver(m);
+            }
             n++;
         }
         return n;
@@ -123,7 +176,20 @@ final class BusSubscription implements Subscription {
                 n++;
             }
         }
+        for (Release r = releases.poll(); r != null && !closed; r = releases.poll()) {
+            tellReleased(r);
+            n++;
+        }
         return n;
+    }
+
+    private void tellReleased(Release r) {
+        try {
+            consumer.released(r.address(), r.streams());
+        } catch (Throwable t) {
+            failures.increment();
+            lastFailure = t;
+        }
     }
 
     private void deliver(StreamMessage m) {
@@ -143,16 +209,19 @@ final class BusSubscription implements Subscription {
     }
 
     private boolean isEmpty() {
-        return lossless ? fifo.isEmpty() : latest.isEmpty();
+        return lossless ? fifo.isEmpty() : latest.isEmpty() && releases.isEmpty();
     }
 
     private void discard() {
         if (lossless) {
-            while (fifo.poll() != null) {
+            for (StreamMessage m = fifo.poll(); m != null; m = fifo.poll()) {
                 size.decrementAndGet();
-                dropped.increment();
+                if (!(m.payload() instanceof Release)) {
+                    dropped.increment();
+                }
             }
         } else {
+            releases.clear();
             for (StreamKey k : latest.keySet()) {
                 if (latest.remove(k) != null) {
                     dropped.increment();

@@ -1,5 +1,9 @@
 package org.stagecraft.streams;
 
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
 import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -8,6 +12,7 @@ import java.util.concurrent.Executor;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
 /**
@@ -45,7 +50,16 @@ public final class StreamBus implements AutoCloseable {
     /** Matching subscriptions per key; replaced (not cleared) on every change, so no stale entry survives. */
     private volatile ConcurrentHashMap<StreamKey, BusSubscription[]> routes = new ConcurrentHashMap<>();
     private final ConcurrentHashMap<StreamKey, Boolean> known = new ConcurrentHashMap<>();
+    /**
+     * The known streams by address (source and destination), so that {@link #release(String)} finds a
+     * connection's streams without scanning all of them. Guarded by {@code streamLock}, as are the
+     * additions to {@code known}: a stream is learned or released under it, never half of each.
+     */
+    private final HashMap<String, Set<StreamKey>> byAddress = new HashMap<>();
+    private final Object streamLock = new Object();
     private final CopyOnWriteArrayList<StreamListener> listeners = new CopyOnWriteArrayList<>();
+    private final CopyOnWriteArrayList<ReleaseListener> releaseListeners = new CopyOnWriteArrayList<>();
+    private final LongAdder released = new LongAdder();
     private final LongAdder published = new LongAdder();
     private final LongAdder listenerFailures = new LongAdder();
     private volatile boolean closed;
@@ -79,11 +93,7 @@ public final class StreamBus implements AutoCloseable {
         ConcurrentHashMap<StreamKey, BusSubscription[]> table = routes;
         BusSubscription[] route = table.get(key);
         if (route == null) {
-            if (known.putIfAbsent(key, Boolean.TRUE) == null) {
-                announce(key);
-            }
-            route = routeFor(key);
-            table.putIfAbsent(key, route);
+            route = learn(key, table);
         }
         for (BusSubscription s : route) {
             s.offer(m);
@@ -115,6 +125,142 @@ public final class StreamBus implements AutoCloseable {
         if (subscriptions.remove(s)) {
             routes = new ConcurrentHashMap<>();
         }
+    }
+
+    /** The slow path of a publish: a key without a cached route (new, or its route table was replaced). */
+    private BusSubscription[] learn(StreamKey key, ConcurrentHashMap<StreamKey, BusSubscription[]> table) {
+        BusSubscription[] route = routeFor(key);
+        boolean isNew;
+        synchronized (streamLock) {
+            isNew = known.putIfAbsent(key, Boolean.TRUE) == null;
+            if (isNew) {
+                byAddress.computeIfAbsent(key.source(), a -> new HashSet<>()).add(key);
+                byAddress.computeIfAbsent(key.destination(), a -> new HashSet<>()).add(key);
+            }
+            BusSubscription[] cached = table.putIfAbsent(key, route);
+            if (cached != null) {
+                route = cached;
+            }
+        }
+        if (isNew) {
+            announce(key);
+        }
+        return route;
+    }
+
+    /**
+     * Forgets every stream whose source or destination is {@code address} — e.g. when the connection
+     * of the robot program at {@code "127.0.0.1:40312"} has closed — so that a bus living for days
+     * with short-lived connections does not grow with each one. Released streams leave
+     * {@link #streams()} and the route cache, and listeners forget they were told about them.
+     *
+     * <p>
+     * Subscribers keep what they have: a message of a released stream still buffered in a subscription
+     * is delivered as usual, and whatever a consumer (a view) kept of it is its own. Each subscription
+     * matching some of the streams is told through {@link StreamConsumer#released}, after the messages
+     * offered to it before the release (so a forwarder can release them on its own bus in order), and
+     * release listeners ({@link #onRelease}) are told too. A later message with a released key simply starts the
+     * stream again (it is announced as new). Call it after the last publish of those streams; a publish
+     * racing with the release may re-create its stream, nothing worse.
+     *
+     * @return how many streams were released (0 if none had that address)
+     */
+    public int release(String address) {
+        Objects.requireNonNull(address, "address");
+        List<StreamKey> gone = new ArrayList<>();
+        synchronized (streamLock) {
+            Set<StreamKey> keys = byAddress.remove(address);
+            if (keys != null) {
+                for (StreamKey k : keys) {
+                    known.remove(k);
+                    String other = address.equals(k.source()) ? k.destination() : k.source();
+                    Set<StreamKey> ofOther = byAddress.get(other);
+                    if (ofOther != null && ofOther.remove(k) && ofOther.isEmpty()) {
+                        byAddress.remove(other);
+                    }
+                    gone.add(k);
+                }
+                ConcurrentHashMap<StreamKey, BusSubscription[]> table = routes;
+                for (StreamKey k : gone) {
+                    table.remove(k);
+                }
+            }
+        }
+        if (gone.isEmpty()) {
+            return 0;
+        }
+        for (StreamListener l : listeners) {
+            for (StreamKey k : gone) {
+                l.told.remove(k);
+            }
+        }
+        released.add(gone.size());
+        Set<StreamKey> told = Set.copyOf(gone);
+        for (BusSubscription s : subscriptions) {
+            s.offerRelease(address, told);
+        }
+        for (ReleaseListener l : releaseListeners) {
+            tellReleased(l, address, told);
+        }
+        return gone.size();
+    }
+
+    /**
+     * Tells {@code listener}, through the delivery executor, the address and the streams of every
+     * {@link #release(String)} that released at least one stream after this call.
+     */
+    public Registration onRelease(BiConsumer<String, Set<StreamKey>> listener) {
+        Objects.requireNonNull(listener, "listener");
+        ReleaseListener l = new ReleaseListener(listener);
+        releaseListeners.add(l);
+        return () -> {
+            l.closed = true;
+            releaseListeners.remove(l);
+        };
+    }
+
+    private void tellReleased(ReleaseListener l, String address, Set<StreamKey> keys) {
+        if (l.closed || closed) {
+            return;
+        }
+        try {
+            executor.execute(() -> {
+                if (l.closed || closed) {
+                    return;
+                }
+                try {
+                    l.listener.accept(address, keys);
+                } catch (Throwable t) {
+                    listenerFailures.increment();
+                }
+            });
+        } catch (RuntimeException rejected) {
+            listenerFailures.increment();
+        }
+    }
+
+    /** Streams released so far by {@link #release(String)}. */
+    public long released() {
+        return released.sum();
+    }
+
+    /**
+     * The bus's own bookkeeping, for tests and benchmarks: known streams, cached routes, addresses
+     * indexed, and keys remembered by new-stream listeners (which must all return to their baseline
+     * when the streams of closed connections are released).
+     */
+    public Footprint footprint() {
+        int told = 0;
+        for (StreamListener l : listeners) {
+            told += l.told.size();
+        }
+        synchronized (streamLock) {
+            return new Footprint(known.size(), routes.size(), byAddress.size(), told);
+        }
+    }
+
+    /** See {@link #footprint()}. */
+    public record Footprint(int streams, int routes, int addresses, int listenerKeys) {
     }
 
     private BusSubscription[] routeFor(StreamKey key) {
@@ -222,8 +368,21 @@ public final class StreamBus implements AutoCloseable {
             l.closed = true;
         }
         listeners.clear();
+        for (ReleaseListener l : releaseListeners) {
+            l.closed = true;
+        }
+        releaseListeners.clear();
         if (owned != null) {
             owned.shutdownNow();
+        }
+    }
+
+    private static final class ReleaseListener {
+        final BiConsumer<String, Set<StreamKey>> listener;
+        volatile boolean closed;
+
+        ReleaseListener(BiConsumer<String, Set<StreamKey>> listener) {
+            this.listener = listener;
         }
     }
 

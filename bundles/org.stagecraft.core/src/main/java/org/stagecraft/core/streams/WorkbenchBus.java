@@ -1,8 +1,13 @@
 package org.stagecraft.core.streams;
 
+import java.util.Set;
+
 import org.stagecraft.core.extensions.Contributions;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamConsumer;
+import org.stagecraft.streams.StreamKey;
+import org.stagecraft.streams.StreamMessage;
 import org.stagecraft.streams.StreamPattern;
 import org.stagecraft.streams.StreamProcessors;
 import org.stagecraft.streams.Subscription;
@@ -27,11 +32,22 @@ public final class WorkbenchBus {
     /**
      * Republishes everything {@code source} carries (e.g. a Robot Session's own bus, fed by its spy) on the
      * workbench bus, in order and lossless up to {@value #FORWARD_CAPACITY} waiting messages, so that the
-     * views and the processors see it. Close the result to stop.
+     * views and the processors see it. Streams {@code source} releases (closed connections) are released on the workbench bus
+     * too, after their last forwarded message. Close the result to stop.
      */
     public static Subscription forward(StreamBus source) {
         StreamBus target = get();
-        return source.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(FORWARD_CAPACITY), target::publish);
+        return source.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(FORWARD_CAPACITY), new StreamConsumer() {
+            @Override
+            public void accept(StreamMessage m) {
+                target.publish(m);
+            }
+
+            @Override
+            public void released(String address, Set<StreamKey> streams) {
+                target.release(address);
+            }
+        });
     }
 
     /** The bus, with the contributed processors started on it; a new one (and new processors) if the last was closed. */

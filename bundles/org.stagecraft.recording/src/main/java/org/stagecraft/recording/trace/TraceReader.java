@@ -1,9 +1,8 @@
 package org.stagecraft.recording.trace;
 
-import java.io.BufferedReader;
 import java.io.Closeable;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
+import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Base64;
@@ -26,31 +25,35 @@ public final class TraceReader implements Closeable {
     public static final String FORMAT = "player-trace";
 
     private final String name;
-    private final BufferedReader in;
+    private final TraceLines in;
     private long line;
     private boolean sawHeader;
 
     public TraceReader(Path file) throws IOException {
-        this(file.toString(), Files.newBufferedReader(file, StandardCharsets.UTF_8));
+        this(file.toString(), Files.newInputStream(file));
     }
 
-    public TraceReader(String name, BufferedReader in) {
+    /**
+     * Reads UTF-8 JSON lines from {@code in}, named {@code name} in error messages. Memory per line is
+     * bounded: a line longer than 16 MiB is refused (see {@link TraceLines#MAX_LINE_BYTES}).
+     */
+    public TraceReader(String name, InputStream in) {
         this.name = name;
-        this.in = in;
+        this.in = new TraceLines(name, in);
     }
 
     /** @return the next record, or null at the end of the file */
     public TraceRecord next() throws IOException {
         String text;
         do {
-            text = in.readLine();
+            text = in.next();
             if (text == null) {
                 if (!sawHeader) {
                     throw new TraceFormatException(name + ": empty file, expected a \"" + FORMAT + "\" header line");
                 }
                 return null;
             }
-            line++;
+            line = in.lineNumber();
         } while (text.isBlank());
         JsonObject o;
         try {
@@ -60,7 +63,13 @@ public final class TraceReader implements Closeable {
             }
             o = e.getAsJsonObject();
         } catch (JsonParseException e) {
-            throw new TraceFormatException(where() + "not valid JSON (" + e.getMessage() + ")", e);
+            if (e.getCause() instanceof OutOfMemoryError) { // Gson wraps it; it is not the line's fault
+                throw fail("the line (" + text.length() + " characters) does not fit in the memory left (maximum heap "
+                        + (Runtime.getRuntime().maxMemory() >> 20) + " MiB)");
+            }
+            throw new TraceFormatException(where() + "not valid JSON (" + parserMessage(e) + ")", e);
+        } catch (StackOverflowError e) { // nesting deeper than the parser's stack: not a trace line anyway
+            throw fail("not valid JSON (nested too deeply)");
         }
         if (!sawHeader) {
             sawHeader = true;
@@ -96,14 +105,48 @@ public final class TraceReader implements Closeable {
             throw fail("expected a header with \"format\":\"" + FORMAT + "\"");
         }
         JsonElement version = o.get("version");
-        if (version == null || !version.isJsonPrimitive() || version.getAsInt() != 1) {
-            throw fail("unsupported player-trace version " + version + " (this reader knows version 1)");
+        if (version == null) {
+            throw fail("the header has no \"version\" (this reader knows player-trace version 1)");
+        }
+        if (!isVersionOne(version)) {
+            throw fail("unsupported player-trace version " + abbreviate(version.toString())
+                    + " (this reader knows version 1)");
         }
         Map<String, String> fields = new LinkedHashMap<>();
         for (Map.Entry<String, JsonElement> e : o.entrySet()) {
             fields.put(e.getKey(), e.getValue().isJsonPrimitive() ? e.getValue().getAsString() : e.getValue().toString());
         }
         return new TraceRecord.Header(line, fields);
+    }
+
+    private static boolean isVersionOne(JsonElement version) {
+        if (!version.isJsonPrimitive()) {
+            return false;
+        }
+        try {
+            return new java.math.BigDecimal(version.getAsString()).compareTo(java.math.BigDecimal.ONE) == 0;
+        } catch (NumberFormatException e) {
+            return false;
+        }
+    }
+
+    /** What the parser said, without the exception class name or the link it appends on a line of its own. */
+    private static String parserMessage(Throwable e) {
+        Throwable t = e;
+        while (t.getCause() != null && t.getCause() != t) {
+            t = t.getCause();
+        }
+        String m = t.getMessage() != null ? t.getMessage() : e.getMessage();
+        if (m == null) {
+            return "unreadable";
+        }
+        int nl = m.indexOf('\n');
+        return nl < 0 ? m : m.substring(0, nl);
+    }
+
+    /** A value quoted in a message: short enough to read. */
+    private static String abbreviate(String text) {
+        return text.length() <= 40 ? text : text.substring(0, 40) + "...";
     }
 
     private String where() {

@@ -7,9 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.BufferedReader;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
-import java.io.StringReader;
+import java.nio.charset.StandardCharsets;
 
 import org.junit.jupiter.api.Test;
 import org.stagecraft.player.wire.Direction;
@@ -18,7 +18,11 @@ class TraceReaderTest {
     private static final String HEADER = "{\"format\":\"player-trace\",\"version\":1,\"scenario\":\"x\"}\n";
 
     private static TraceReader reader(String text) {
-        return new TraceReader("test.trace.jsonl", new BufferedReader(new StringReader(text)));
+        return reader(text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    private static TraceReader reader(byte[] bytes) {
+        return new TraceReader("test.trace.jsonl", new ByteArrayInputStream(bytes));
     }
 
     @Test

@@ -616,6 +616,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 openConnections.remove(cl.connection());
                 inflows.remove(cl.connection().id());
                 record(r -> r.closed(cl.connection(), cl.t(), cl.reason()));
+                bus.release(cl.connection().client()); // its streams end here: the bus forgets them (issue 17)
             }
             case HoldDone h -> {
                 record(r -> r.hold(h.action().toEntry(h.t())));
