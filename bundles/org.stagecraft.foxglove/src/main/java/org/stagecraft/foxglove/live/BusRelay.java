@@ -1,0 +1,58 @@
+package org.stagecraft.foxglove.live;
+
+import java.util.function.Consumer;
+import java.util.function.Function;
+
+import org.stagecraft.foxglove.FoxgloveSink;
+import org.stagecraft.streams.DeliveryPolicy;
+import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamMessage;
+import org.stagecraft.streams.StreamPattern;
+import org.stagecraft.streams.Subscription;
+
+/**
+ * Feeds a {@link FoxgloveSink} (the live server) from a stream bus: one lossless, bounded subscription
+ * to every stream, whose consumer runs the converter (e.g. {@code FoxgloveScene::new}, then its
+ * {@code accept}). The bus never calls a consumer concurrently with itself, so the converter needs no
+ * locking; and it never makes the publisher (the spy) wait: when the converter falls behind by more
+ * than {@code capacity} messages, the bus drops and counts them ({@link #dropped()}).
+ */
+public final class BusRelay implements AutoCloseable {
+    /** Messages that may wait for the converter: a few seconds of a busy multi-robot session. */
+    public static final int DEFAULT_CAPACITY = 16_384;
+
+    private final Subscription subscription;
+
+    private BusRelay(Subscription subscription) {
+        this.subscription = subscription;
+    }
+
+    /**
+     * @param converter given the sink, returns what to call with each bus message
+     */
+    public static BusRelay start(StreamBus bus, FoxgloveSink sink,
+            Function<FoxgloveSink, Consumer<StreamMessage>> converter, int capacity) {
+        Consumer<StreamMessage> convert = converter.apply(sink);
+        return new BusRelay(bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(capacity), convert::accept));
+    }
+
+    /** Bus messages converted so far. */
+    public long delivered() {
+        return subscription.delivered();
+    }
+
+    /** Bus messages the converter never saw because it was behind. */
+    public long dropped() {
+        return subscription.dropped();
+    }
+
+    /** Messages the converter failed on (it threw). */
+    public long failures() {
+        return subscription.failures();
+    }
+
+    @Override
+    public void close() {
+        subscription.close();
+    }
+}
