@@ -95,8 +95,10 @@ final class ExportCommand {
             switch (format) {
                 case "mcap" -> {
                     McapExport.Summary s = McapExport.write(log, filter, registry, Path.of(outFile));
-                    err.println("stagecraft export: wrote " + outFile + ": " + s.jsonMessages() + " messages on "
-                            + s.jsonChannels() + " JSON channels, " + s.wireEntries() + " wire entries");
+                    err.println("stagecraft export: wrote " + outFile + ": " + s.robots().size() + " robots "
+                            + s.robots() + " on " + s.foxgloveChannels() + " Foxglove channels, " + s.jsonMessages()
+                            + " Player messages on " + s.jsonChannels() + " JSON channels, " + s.wireEntries()
+                            + " wire entries");
                 }
                 case "csv" -> {
                     try (Writer w = writer(outFile, out)) {

@@ -1,12 +1,15 @@
 package org.stagecraft.replay.export;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
+import org.stagecraft.foxglove.FoxgloveScene;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.replay.log.LogCursor;
@@ -17,7 +20,10 @@ import org.stagecraft.spy.log.SpyLogWriter;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 
 /**
- * A log as an MCAP file Foxglove shows: one JSON channel per stream, as on the stream bus (one
+ * A log as an MCAP file Foxglove shows. Each robot as Foxglove understands it: the channels of
+ * Foxglove's well-known schemas that {@link FoxgloveScene} makes of the log's messages (scans,
+ * frames, poses, cones, maps, diagnostics and session events; see there), written as they come.
+ * Beside them, Player's own messages decoded: one JSON channel per stream, as on the stream bus (one
  * connection's messages of one kind), topic {@code /<port>/<conn>/<iface>:<index>/<TYPE>/<SUBTYPE>}
  * (e.g. {@code /6665/1/laser:0/DATA/SCAN}): two clients of one device are two streams, and putting
  * them on one channel would show every message twice. Message encoding {@code json}, log time the
@@ -30,8 +36,16 @@ import org.stagecraft.spy.proxy.ConnectionInfo;
  * unframed bytes, events and diagnostics in the time range are always kept.
  */
 public final class McapExport {
-    /** What was written. */
-    public record Summary(long wireEntries, long jsonMessages, int jsonChannels) {
+    /**
+     * What was written.
+     *
+     * @param jsonMessages  Player's decoded messages (one JSON channel per stream)
+     * @param jsonChannels  their channels
+     * @param foxgloveChannels channels of Foxglove's well-known schemas (robots, scans, frames, logs)
+     * @param robots        the robots of the Foxglove channels ({@code robot6665}, ...)
+     */
+    public record Summary(long wireEntries, long jsonMessages, int jsonChannels, int foxgloveChannels,
+            List<String> robots) {
     }
 
     /** One stream: a connection's messages of one kind. */
@@ -59,18 +73,34 @@ public final class McapExport {
         meta.put("filter", filter.isAll() ? "none" : filter.toString());
         Map<Stream, Integer> channels = new HashMap<>();
         long[] counts = new long[2]; // wire entries, JSON messages
+        SpyLogFoxgloveSink foxglove;
+        FoxgloveScene scene;
         try (SpyLogWriter w = SpyLogWriter.create(out, meta)) {
+            foxglove = new SpyLogFoxgloveSink(w);
+            scene = new FoxgloveScene(foxglove);
             forEachTaken(log, filter, registry, m -> {
                 ConnectionInfo ci = m.connection();
                 switch (m.kind()) {
-                    case OPENED -> w.connectionOpened(m.timeNanos(), ci.id(), ci.client(), ci.listen(), ci.upstream());
-                    case CLOSED -> w.connectionClosed(m.timeNanos(), ci.id(), m.text());
-                    case DIAGNOSTIC -> w.diagnostic(m.timeNanos(), ci.id(), m.dir(), m.streamOffset(), m.text());
+                    case OPENED -> {
+                        w.connectionOpened(m.timeNanos(), ci.id(), ci.client(), ci.listen(), ci.upstream());
+                        scene.event(m.timeNanos(), "connection " + ci.id(), "connection " + ci.id() + " opened: "
+                                + ci.client() + " -> " + ci.listen() + " (Player at " + ci.upstream() + ")");
+                    }
+                    case CLOSED -> {
+                        w.connectionClosed(m.timeNanos(), ci.id(), m.text());
+                        scene.event(m.timeNanos(), "connection " + ci.id(), "connection " + ci.id() + " ("
+                                + ci.client() + " -> " + ci.listen() + ") closed: " + m.text());
+                    }
+                    case DIAGNOSTIC -> {
+                        w.diagnostic(m.timeNanos(), ci.id(), m.dir(), m.streamOffset(), m.text());
+                        m.toStreamMessage().ifPresent(scene::accept);
+                    }
                     case BANNER, UNFRAMED -> {
                         w.wire(m.timeNanos(), ci.id(), ci.port(), m.dir(), m.streamOffset(),
                                 m.kind() == LogMessage.Kind.BANNER ? LogEntry.Kind.BANNER : LogEntry.Kind.UNFRAMED,
                                 m.bytes(), m.text());
                         counts[0]++;
+                        m.toStreamMessage().ifPresent(scene::accept);
                     }
                     case FRAME -> {
                         w.wire(m.timeNanos(), ci.id(), ci.port(), m.dir(), m.streamOffset(), LogEntry.Kind.FRAME,
@@ -86,11 +116,14 @@ public final class McapExport {
                         w.message(channel, m.timeNanos(),
                                 JsonBody.of(h, m.decoded().body()).getBytes(StandardCharsets.UTF_8));
                         counts[1]++;
+                        m.toStreamMessage().ifPresent(scene::accept);
                     }
                 }
             });
+        } catch (UncheckedIOException e) {
+            throw e.getCause();
         }
-        return new Summary(counts[0], counts[1], channels.size());
+        return new Summary(counts[0], counts[1], channels.size(), foxglove.channels(), scene.robots());
     }
 
     /** Every message of the time range, Player messages only when the filter takes them. */

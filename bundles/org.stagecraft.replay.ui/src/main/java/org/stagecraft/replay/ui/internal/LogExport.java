@@ -101,8 +101,9 @@ public final class LogExport {
             case MCAP -> {
                 Files.deleteIfExists(out);
                 McapExport.Summary s = McapExport.write(log, filter, registry, out);
-                yield String.format(Locale.ROOT, "%,d JSON messages on %d channels, %,d wire entries", s.jsonMessages(),
-                        s.jsonChannels(), s.wireEntries());
+                yield String.format(Locale.ROOT,
+                        "%d robots on %d Foxglove channels, %,d Player messages on %d JSON channels, %,d wire entries",
+                        s.robots().size(), s.foxgloveChannels(), s.jsonMessages(), s.jsonChannels(), s.wireEntries());
             }
         };
     }
