@@ -4,6 +4,8 @@ import java.util.function.Consumer;
 import java.util.function.Function;
 
 import org.stagecraft.foxglove.FoxgloveSink;
+import org.stagecraft.spy.proxy.SpyDiagnostic;
+import org.stagecraft.spy.proxy.SpyMessage;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamMessage;
@@ -16,6 +18,9 @@ import org.stagecraft.streams.Subscription;
  * {@code accept}). The bus never calls a consumer concurrently with itself, so the converter needs no
  * locking; and it never makes the publisher (the spy) wait: when the converter falls behind by more
  * than {@code capacity} messages, the bus drops and counts them ({@link #dropped()}).
+ *
+ * <p>When a {@link ConnectionEnded} comes (see {@link EndOfConnections}), the channels that only that
+ * connection fed are unadvertised; they are advertised again if messages come back.
  */
 public final class BusRelay implements AutoCloseable {
     /** Messages that may wait for the converter: a few seconds of a busy multi-robot session. */
@@ -32,8 +37,21 @@ public final class BusRelay implements AutoCloseable {
      */
     public static BusRelay start(StreamBus bus, FoxgloveSink sink,
             Function<FoxgloveSink, Consumer<StreamMessage>> converter, int capacity) {
-        Consumer<StreamMessage> convert = converter.apply(sink);
-        return new BusRelay(bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(capacity), convert::accept));
+        LiveChannels channels = new LiveChannels(sink);
+        Consumer<StreamMessage> convert = converter.apply(channels);
+        return new BusRelay(bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(capacity), m -> {
+            switch (m.payload()) {
+                case ConnectionEnded end -> channels.connectionEnded(end.connection().id());
+                case SpyMessage s -> convert(channels, s.connection().id(), convert, m);
+                case SpyDiagnostic d -> convert(channels, d.connection().id(), convert, m);
+                case null, default -> convert(channels, LiveChannels.NO_CONNECTION, convert, m);
+            }
+        }));
+    }
+
+    private static void convert(LiveChannels channels, int connection, Consumer<StreamMessage> convert, StreamMessage m) {
+        channels.converting(connection);
+        convert.accept(m);
     }
 
     /** Bus messages converted so far. */

@@ -48,8 +48,15 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     static final long TIME_INTERVAL_NANOS = 50_000_000L;
     private static final long START_TIMEOUT_SECONDS = 10;
 
-    /** What the server counted since it started. */
-    public record Counters(int viewers, int channels, long published, long framesSent, long framesDropped) {
+    /**
+     * What the server counted since it started.
+     *
+     * @param viewers       connected now
+     * @param viewersServed connected since the start
+     * @param framesDropped message and time frames not sent because a viewer's queue was full
+     */
+    public record Counters(int viewers, long viewersServed, int channels, long published, long framesSent,
+            long framesDropped) {
     }
 
     private final String name;
@@ -65,6 +72,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     /** Read by publishers without the lock. */
     private final Map<FoxgloveChannel, Integer> advertisedIds = new ConcurrentHashMap<>();
     private final LongAdder published = new LongAdder();
+    private final LongAdder viewersServed = new LongAdder();
     private final LongAdder sentByGone = new LongAdder();
     private final LongAdder droppedByGone = new LongAdder();
     private final AtomicLong lastTimeSent = new AtomicLong(Long.MIN_VALUE);
@@ -149,7 +157,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
         synchronized (lock) {
             channels = advertised.size();
         }
-        return new Counters(sessions.size(), channels, published.sum(), sent, dropped);
+        return new Counters(sessions.size(), viewersServed.sum(), channels, published.sum(), sent, dropped);
     }
 
     // ---- FoxgloveSink ----------------------------------------------------------------------------
@@ -248,6 +256,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
             s.sendText(LiveProtocol.advertise(now)); // always one, even with no channel yet
             sessions.put(conn, s);
         }
+        viewersServed.increment();
         notices.accept("viewer " + s.name() + " connected");
     }
 
