@@ -41,27 +41,28 @@ import org.stagecraft.streams.StreamMessage;
  */
 final class SpyCommand {
     static final String USAGE = "usage: stagecraft spy --listen [HOST:]PORT --to HOST:PORT [--listen ... --to ...]"
-            + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS] [--foxglove [ADDR:]PORT]";
+            + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS] [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]]";
     private static final long OBSERVER_QUEUE_BYTES = 64L << 20;
 
     /** The live view's converter: Player messages and spy diagnostics to Foxglove's schemas. */
     static final Function<FoxgloveSink, Consumer<StreamMessage>> FOXGLOVE_SCENE = sink -> new FoxgloveScene(sink)::accept;
 
-    /** @param foxglove where to serve the live view, or null for none */
-    record Options(List<Route> routes, Path log, Duration upstreamGrace, InetSocketAddress foxglove) {
+    /**
+     * @param foxglove      where to serve the live view, or null for none
+     * @param foxgloveQueue how many messages may wait for each viewer before new ones are dropped
+     */
+    record Options(List<Route> routes, Path log, Duration upstreamGrace, InetSocketAddress foxglove, int foxgloveQueue) {
     }
 
     private final Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter;
-    private final int maxQueuedFrames;
 
     SpyCommand() {
-        this(FOXGLOVE_SCENE, FoxgloveServer.DEFAULT_MAX_QUEUED_FRAMES);
+        this(FOXGLOVE_SCENE);
     }
 
-    /** For tests: another converter for the live view, another bound of each viewer's queue. */
-    SpyCommand(Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter, int maxQueuedFrames) {
+    /** For tests: another converter for the live view. */
+    SpyCommand(Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter) {
         this.liveConverter = liveConverter;
-        this.maxQueuedFrames = maxQueuedFrames;
     }
 
     int run(String[] args, PrintStream out, PrintStream err) {
@@ -129,7 +130,7 @@ final class SpyCommand {
         FoxgloveServer foxglove = null;
         if (o.foxglove() != null) {
             try {
-                foxglove = FoxgloveServer.start(o.foxglove(), "Stagecraft spy", maxQueuedFrames);
+                foxglove = FoxgloveServer.start(o.foxglove(), "Stagecraft spy", o.foxgloveQueue());
             } catch (IOException e) {
                 err.println("stagecraft spy: " + e.getMessage());
                 spy.close();
@@ -230,6 +231,7 @@ final class SpyCommand {
         String bind = Route.DEFAULT_BIND;
         Path log = null;
         String foxglove = null;
+        int foxgloveQueue = FoxgloveServer.DEFAULT_MAX_QUEUED_FRAMES;
         Duration grace = NetworkSpy.DEFAULT_UPSTREAM_GRACE;
         List<String> listens = new ArrayList<>();
         List<String> tos = new ArrayList<>();
@@ -246,6 +248,7 @@ final class SpyCommand {
                 case "--log" -> log = Path.of(v);
                 case "--upstream-grace" -> grace = seconds(a, v);
                 case "--foxglove" -> foxglove = v;
+                case "--foxglove-queue" -> foxgloveQueue = count(a, v);
                 default -> throw new IllegalArgumentException("unknown option " + a);
             }
         }
@@ -266,7 +269,19 @@ final class SpyCommand {
                 throw new IllegalArgumentException("--foxglove: " + e.getMessage(), e);
             }
         }
-        return new Options(routes, log, grace, live);
+        return new Options(routes, log, grace, live, foxgloveQueue);
+    }
+
+    private static int count(String option, String text) {
+        try {
+            int n = Integer.parseInt(text);
+            if (n >= 1 && n <= 1_000_000) {
+                return n;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new IllegalArgumentException(option + " '" + text + "' is not a number of messages 1..1000000");
     }
 
     private static Duration seconds(String option, String text) {

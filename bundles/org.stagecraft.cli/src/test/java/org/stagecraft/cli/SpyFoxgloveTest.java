@@ -229,7 +229,7 @@ class SpyFoxgloveTest {
             sink.advertise(big);
             return m -> sink.publish(big, m.timeNanos(), m.timeNanos(), payload);
         };
-        Run r = relay(new SpyCommand(inflate, 8), true);
+        Run r = relay(new SpyCommand(inflate), true, "--foxglove-queue", "8");
         assertTrue(r.program().matches(), "the program's bytes differ at " + r.program().firstDifference());
         Matcher m = Pattern.compile("foxglove 1 viewers served, (\\d+) dropped").matcher(r.totals());
         assertTrue(m.find(), r.totals());
@@ -247,6 +247,12 @@ class SpyFoxgloveTest {
         assertTrue(SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--foxglove", "0.0.0.0:8765"}).foxglove()
                 .getAddress().isAnyLocalAddress());
         assertEquals(null, SpyCommand.parse(new String[] {"--listen", "1", "--to", "2"}).foxglove());
+        assertEquals(1024, SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--foxglove", "1"}).foxgloveQueue());
+        assertEquals(16, SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--foxglove", "1", "--foxglove-queue",
+                "16"}).foxgloveQueue());
+        IllegalArgumentException q = assertThrows(IllegalArgumentException.class, () -> SpyCommand.parse(
+                new String[] {"--listen", "1", "--to", "2", "--foxglove", "1", "--foxglove-queue", "0"}));
+        assertTrue(q.getMessage().contains("--foxglove-queue '0' is not a number of messages"), q.getMessage());
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--foxglove", "eighty"}));
         assertTrue(e.getMessage().startsWith("--foxglove: 'eighty' is not HOST:PORT or PORT"), e.getMessage());

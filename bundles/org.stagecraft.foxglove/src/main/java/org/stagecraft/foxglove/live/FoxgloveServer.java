@@ -2,8 +2,10 @@ package org.stagecraft.foxglove.live;
 
 import java.io.IOException;
 import java.net.InetSocketAddress;
+import java.net.StandardSocketOptions;
 import java.net.URI;
 import java.nio.ByteBuffer;
+import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.HashMap;
@@ -21,6 +23,7 @@ import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Consumer;
 
 import org.java_websocket.WebSocket;
+import org.java_websocket.WebSocketImpl;
 import org.java_websocket.drafts.Draft;
 import org.java_websocket.drafts.Draft_6455;
 import org.java_websocket.handshake.ClientHandshake;
@@ -46,6 +49,11 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     public static final int DEFAULT_MAX_QUEUED_FRAMES = 1024;
     /** Time messages are sent when the log time has moved on by at least this much. */
     static final long TIME_INTERVAL_NANOS = 50_000_000L;
+    /**
+     * Each viewer's socket send buffer. Fixed (the kernel would otherwise grow it to megabytes for a
+     * viewer that does not read), so what waits for a viewer is bounded: its queue plus this.
+     */
+    static final int SEND_BUFFER_BYTES = 256 * 1024;
     private static final long START_TIMEOUT_SECONDS = 10;
 
     /**
@@ -231,9 +239,15 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
         }
     }
 
-    /** Closes every viewer's connection and the listening socket. */
+    /**
+     * Closes every viewer's connection and the listening socket. Each viewer's counts are told at once
+     * ({@link #onNotice}): a viewer that does not read may never finish the closing handshake.
+     */
     @Override
     public void close() {
+        for (WebSocket conn : List.copyOf(sessions.keySet())) {
+            closed(conn, "Stagecraft stopped serving");
+        }
         stopQuietly();
     }
 
@@ -248,6 +262,13 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     // ---- viewers ---------------------------------------------------------------------------------
 
     private void opened(WebSocket conn) {
+        if (conn instanceof WebSocketImpl impl && impl.getChannel() instanceof SocketChannel socket) {
+            try {
+                socket.setOption(StandardSocketOptions.SO_SNDBUF, SEND_BUFFER_BYTES);
+            } catch (IOException e) {
+                notices.accept("cannot bound a viewer's send buffer: " + e.getMessage());
+            }
+        }
         ClientSession s = new ClientSession(conn, maxQueuedFrames);
         synchronized (lock) {
             s.sendText(LiveProtocol.serverInfo(name, sessionId, Map.of()));
