@@ -95,8 +95,8 @@ final class ExportCommand {
             switch (format) {
                 case "mcap" -> {
                     McapExport.Summary s = McapExport.write(log, filter, registry, Path.of(outFile));
-                    err.println("stagecraft export: wrote " + outFile + ": " + s.robots().size() + " robots "
-                            + s.robots() + " on " + s.foxgloveChannels() + " Foxglove channels, " + s.jsonMessages()
+                    err.println("stagecraft export: wrote " + outFile + ": " + s.robots().size()
+                            + (s.robots().size() == 1 ? " robot " : " robots ") + s.robots() + " on " + s.foxgloveChannels() + " Foxglove channels, " + s.jsonMessages()
                             + " Player messages on " + s.jsonChannels() + " JSON channels, " + s.wireEntries()
                             + " wire entries");
                 }

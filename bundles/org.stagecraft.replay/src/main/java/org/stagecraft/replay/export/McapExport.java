@@ -10,6 +10,8 @@ import java.util.Map;
 import java.util.TreeMap;
 
 import org.stagecraft.foxglove.FoxgloveScene;
+import org.stagecraft.foxglove.player.PlayerJson;
+import org.stagecraft.foxglove.player.PlayerJsonSchema;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.replay.log.LogCursor;
@@ -60,11 +62,11 @@ public final class McapExport {
     }
 
     public static Summary write(SessionLog log, ExportFilter filter, CodecRegistry registry, Path out) throws IOException {
-        Map<Stream, JsonSchemaOf.Node> schemas = new HashMap<>();
+        Map<Stream, PlayerJsonSchema.Node> schemas = new HashMap<>();
         forEachTaken(log, filter, registry, m -> {
             if (m.kind() == LogMessage.Kind.FRAME) {
-                JsonSchemaOf.Node n = JsonSchemaOf.of(m.decoded().body());
-                schemas.merge(Stream.of(m), n, JsonSchemaOf.Node::merge);
+                PlayerJsonSchema.Node n = PlayerJsonSchema.of(m.decoded().body());
+                schemas.merge(Stream.of(m), n, PlayerJsonSchema.Node::merge);
             }
         });
         Map<String, String> meta = new TreeMap<>();
@@ -114,7 +116,7 @@ public final class McapExport {
                             channels.put(k, channel);
                         }
                         w.message(channel, m.timeNanos(),
-                                JsonBody.of(h, m.decoded().body()).getBytes(StandardCharsets.UTF_8));
+                                PlayerJson.of(h, m.decoded().body()).getBytes(StandardCharsets.UTF_8));
                         counts[1]++;
                         m.toStreamMessage().ifPresent(scene::accept);
                     }
@@ -142,12 +144,12 @@ public final class McapExport {
                 + Names.type(h.type()) + "/" + Names.subtype(registry, h);
     }
 
-    private static int addChannel(SpyLogWriter w, CodecRegistry registry, Stream k, MessageHeader h, JsonSchemaOf.Node schema)
+    private static int addChannel(SpyLogWriter w, CodecRegistry registry, Stream k, MessageHeader h, PlayerJsonSchema.Node schema)
             throws IOException {
         String title = "player " + Names.iface(registry, h.interf()) + " " + Names.type(h.type()) + " "
                 + Names.subtype(registry, h);
         return w.addChannel(topic(registry, k.port(), k.conn(), h), "json", title.replace(' ', '.'), "jsonschema",
-                JsonSchemaOf.text(title, schema).getBytes(StandardCharsets.UTF_8),
+                PlayerJsonSchema.text(title, schema).getBytes(StandardCharsets.UTF_8),
                 Map.of("port", Integer.toString(k.port()), "conn", Integer.toString(k.conn()),
                         "interface", Names.iface(registry, k.interf()), "index", Integer.toString(k.index())));
     }

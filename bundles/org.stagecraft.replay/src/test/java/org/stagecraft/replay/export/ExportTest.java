@@ -22,6 +22,8 @@ import java.util.Map;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.stagecraft.foxglove.player.PlayerJson;
+import org.stagecraft.foxglove.player.PlayerJsonSchema;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
@@ -341,16 +343,16 @@ class ExportTest {
         org.stagecraft.player.codec.PlayerDecoder decoder = new org.stagecraft.player.codec.PlayerDecoder(REGISTRY);
         var withBody = decoder.decode(new MessageHeader(0, 6665, 1, 0, h.type(), dev, 1.5, 0, req.length), req);
         var without = decoder.decode(h, new byte[0]);
-        JsonObject bodyJson = JsonParser.parseString(JsonBody.of(withBody.header(), withBody.body())).getAsJsonObject();
-        JsonObject emptyJson = JsonParser.parseString(JsonBody.of(without.header(), without.body())).getAsJsonObject();
+        JsonObject bodyJson = JsonParser.parseString(PlayerJson.of(withBody.header(), withBody.body())).getAsJsonObject();
+        JsonObject emptyJson = JsonParser.parseString(PlayerJson.of(without.header(), without.body())).getAsJsonObject();
         assertTrue(bodyJson.size() > emptyJson.size(), "the two layouts differ: " + bodyJson + " / " + emptyJson);
 
-        JsonObject first = JsonParser.parseString(JsonSchemaOf.text("t", JsonSchemaOf.of(without.body()))).getAsJsonObject();
+        JsonObject first = JsonParser.parseString(PlayerJsonSchema.text("t", PlayerJsonSchema.of(without.body()))).getAsJsonObject();
         assertTrue(!first.getAsJsonObject("properties").keySet().containsAll(bodyJson.keySet()),
                 "a schema from the first (empty) NACK alone does not describe the other");
 
-        JsonSchemaOf.Node union = JsonSchemaOf.of(without.body()).merge(JsonSchemaOf.of(withBody.body()));
-        JsonObject schema = JsonParser.parseString(JsonSchemaOf.text("player RESP_NACK DEV", union)).getAsJsonObject();
+        PlayerJsonSchema.Node union = PlayerJsonSchema.of(without.body()).merge(PlayerJsonSchema.of(withBody.body()));
+        JsonObject schema = JsonParser.parseString(PlayerJsonSchema.text("player RESP_NACK DEV", union)).getAsJsonObject();
         assertEquals(bodyJson.keySet(), schema.getAsJsonObject("properties").keySet(), "every member seen is described");
         assertEquals(List.of("header"), schema.getAsJsonArray("required").asList().stream().map(JsonElement::getAsString).toList(),
                 "only what every layout has is required");

@@ -103,6 +103,41 @@ class FoxgloveExportTest {
     }
 
     @Test
+    void mapsBumpersFiducialsBlobsAndSonarBecomeGridsAndSceneUpdates() {
+        Map<String, JsonObject> last = new HashMap<>();
+        for (SyntheticDevices.Sent m : SyntheticDevices.scene()) {
+            Set<ValidationMessage> errors = SCHEMAS.getSchema(m.channel().schema()).validate(m.json(), InputFormat.JSON);
+            assertTrue(errors.isEmpty(), m.channel().topic() + ": " + errors);
+            last.put(m.channel().topic(), com.google.gson.JsonParser.parseString(m.json()).getAsJsonObject());
+        }
+        // Player's map cells (-1 free, 0 unknown, +1 occupied) in the convention Foxglove colours: 0, -1, 100
+        JsonObject grid = last.get("/robot6665/map0/grid");
+        assertEquals(4, grid.get("column_count").getAsInt());
+        assertEquals("world", grid.get("frame_id").getAsString());
+        byte[] cells = java.util.Base64.getDecoder().decode(grid.get("data").getAsString());
+        assertEquals(java.util.Arrays.toString(new byte[] { 0, 0, -1, 100, 0, 100, 100, -1, -1, -1, 0, 0 }),
+                java.util.Arrays.toString(cells));
+        // bumper 0 pressed (red), bumper 1 not
+        var cubes = last.get("/robot6665/bumper0/bumpers").getAsJsonArray("entities").get(0).getAsJsonObject()
+                .getAsJsonArray("cubes");
+        assertEquals(2, cubes.size());
+        assertEquals(1.0, cubes.get(0).getAsJsonObject().getAsJsonObject("color").get("r").getAsDouble());
+        assertTrue(cubes.get(1).getAsJsonObject().getAsJsonObject("color").get("r").getAsDouble() < 0.5);
+        var texts = last.get("/robot6665/fiducial0/fiducials").getAsJsonArray("entities").get(0).getAsJsonObject()
+                .getAsJsonArray("texts");
+        assertEquals("fiducial 7", texts.get(0).getAsJsonObject().get("text").getAsString());
+        // the blob at pixel column 20 of 80: a quarter of the 60 degree field of view left of the axis, 2.5 m away
+        var blob = last.get("/robot6665/blobfinder0/blobs").getAsJsonArray("entities").get(0).getAsJsonObject()
+                .getAsJsonArray("cubes").get(0).getAsJsonObject().getAsJsonObject("pose").getAsJsonObject("position");
+        assertEquals(2.5 * Math.cos(Math.toRadians(15)), blob.get("x").getAsDouble(), 1e-9);
+        assertEquals(2.5 * Math.sin(Math.toRadians(15)), blob.get("y").getAsDouble(), 1e-9);
+        // 8 transducers, one at range 0 (no cone): 7 cones of 6 slices
+        var cones = last.get("/robot6665/sonar0/cones").getAsJsonArray("entities").get(0).getAsJsonObject()
+                .getAsJsonArray("triangles").get(0).getAsJsonObject().getAsJsonArray("points");
+        assertEquals(7 * 6 * 3, cones.size());
+    }
+
+    @Test
     void sensorsSitWhereTheirGeometrySaysAndEveryScanIsExported() throws IOException {
         FoxgloveExports x = FoxgloveExports.of(FoxgloveExports.traces().stream()
                 .filter(p -> p.getFileName().toString().equals("pioneer-laser-sonar.gt.trace.jsonl")).findFirst().orElseThrow());

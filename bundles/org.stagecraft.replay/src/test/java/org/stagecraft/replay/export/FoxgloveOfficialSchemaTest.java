@@ -108,6 +108,20 @@ class FoxgloveOfficialSchemaTest {
     }
 
     @Test
+    void devicesTheCorpusLacksAreValidAgainstTheOfficialSchemasToo() throws IOException {
+        Map<String, Integer> validated = new TreeMap<>();
+        for (SyntheticDevices.Sent m : SyntheticDevices.scene()) {
+            JsonSchema s = FACTORY.getSchema(Files.readString(official(m.channel().schemaName())));
+            Set<ValidationMessage> errors = s.validate(m.json(), InputFormat.JSON);
+            assertTrue(errors.isEmpty(), m.channel().topic() + ": " + errors);
+            validated.merge(m.channel().topic(), 1, Integer::sum);
+        }
+        assertTrue(validated.keySet().containsAll(Set.of("/robot6665/map0/grid", "/robot6665/bumper0/bumpers",
+                "/robot6665/fiducial0/fiducials", "/robot6665/blobfinder0/blobs", "/robot6665/sonar0/cones")),
+                validated.toString());
+    }
+
+    @Test
     void theOfficialSchemasRejectWhatFoxgloveWouldNotRead() throws IOException {
         JsonSchema log = FACTORY.getSchema(Files.readString(official("foxglove.Log")));
         String good = "{\"timestamp\":{\"sec\":1795315969,\"nsec\":5},\"level\":3,\"message\":\"m\",\"name\":\"n\","

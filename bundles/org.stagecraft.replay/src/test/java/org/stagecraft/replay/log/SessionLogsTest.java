@@ -38,8 +38,11 @@ class SessionLogsTest {
         return TraceCorpus.all().stream();
     }
 
-    /** The wire entries of a log, in order, against the trace framed on its own. */
-    private static void assertSameWire(List<SessionEvent> expected, List<LogMessage> actual) {
+    /**
+     * The wire entries of a log, in order, against the trace framed on its own; the log's times
+     * {@code startNanos} later than the trace's (a trace counts from its recorder's start).
+     */
+    private static void assertSameWire(List<SessionEvent> expected, List<LogMessage> actual, long startNanos) {
         List<LogMessage> wire = actual.stream().filter(m -> m.dir() != null && m.kind() != LogMessage.Kind.DIAGNOSTIC)
                 .toList();
         assertEquals(expected.size(), wire.size(), "wire entries");
@@ -47,7 +50,7 @@ class SessionLogsTest {
             SessionEvent e = expected.get(i);
             LogMessage m = wire.get(i);
             String at = "entry " + i;
-            assertEquals(Logs.nanos(e.t()), m.timeNanos(), at);
+            assertEquals(startNanos + Logs.nanos(e.t()), m.timeNanos(), at);
             assertEquals(e.stream().conn(), m.connection().id(), at);
             assertEquals(e.stream().port(), m.connection().port(), at);
             assertEquals(e.stream().dir(), m.dir(), at);
@@ -73,7 +76,16 @@ class SessionLogsTest {
             assertEquals(trace, log.path());
             assertTrue(log.problems().isEmpty(), () -> log.problems().toString());
             List<LogMessage> all = Logs.all(log);
-            assertSameWire(expected, all);
+            // the trace's times plus the date its header says the recording started: real dates, as a spy log has
+            long created;
+            try (org.stagecraft.recording.trace.TraceReader r = new org.stagecraft.recording.trace.TraceReader(trace)) {
+                String date = ((org.stagecraft.recording.trace.TraceRecord.Header) r.next()).fields().get("created");
+                java.time.Instant i = java.time.OffsetDateTime.parse(date).toInstant();
+                created = i.getEpochSecond() * 1_000_000_000L + i.getNano();
+            }
+            assertTrue(created > java.time.Instant.parse("2026-01-01T00:00:00Z").getEpochSecond() * 1_000_000_000L,
+                    "the corpus was recorded in 2026");
+            assertSameWire(expected, all, created);
             assertEquals(all.get(0).timeNanos(), log.startNanos());
             assertEquals(all.get(all.size() - 1).timeNanos(), log.endNanos());
             Set<Integer> conns = new TreeSet<>();

@@ -102,8 +102,8 @@ public final class LogExport {
                 Files.deleteIfExists(out);
                 McapExport.Summary s = McapExport.write(log, filter, registry, out);
                 yield String.format(Locale.ROOT,
-                        "%d robots on %d Foxglove channels, %,d Player messages on %d JSON channels, %,d wire entries",
-                        s.robots().size(), s.foxgloveChannels(), s.jsonMessages(), s.jsonChannels(), s.wireEntries());
+                        "%d %s on %d Foxglove channels, %,d Player messages on %d JSON channels, %,d wire entries",
+                        s.robots().size(), s.robots().size() == 1 ? "robot" : "robots", s.foxgloveChannels(), s.jsonMessages(), s.jsonChannels(), s.wireEntries());
             }
         };
     }

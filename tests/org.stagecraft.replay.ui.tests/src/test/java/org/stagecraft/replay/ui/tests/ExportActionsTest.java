@@ -81,6 +81,10 @@ class ExportActionsTest {
             Path mcap = dir.resolve("whole.mcap");
             s = finish(LogExport.start(e.file(), LogExport.Kind.MCAP, ExportFilter.all(), e.columns().registry(), mcap));
             assertTrue(s.isOK(), s.getMessage());
+            // the recording's one robot, as Foxglove's own messages (checked in detail by the replay bundle's tests)
+            assertTrue(s.getMessage().contains("1 robot on "), s.getMessage());
+            assertTrue(new String(Files.readAllBytes(mcap), StandardCharsets.ISO_8859_1).contains("foxglove.LaserScan"),
+                    "a foxglove.LaserScan channel");
             try (SessionLog back = SessionLogs.open(mcap)) {
                 assertEquals(LogFormat.SPY_LOG, back.format(), "the export is also a spy log");
                 assertEquals(e.log().messageCount(), back.messageCount(), "every wire entry");

@@ -1,4 +1,4 @@
-package org.stagecraft.replay.export;
+package org.stagecraft.foxglove.player;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -12,7 +12,7 @@ import org.stagecraft.player.codec.FieldVisitor;
 import org.stagecraft.player.codec.MessageBody;
 
 /**
- * A JSON Schema for the JSON {@link JsonBody} writes for one stream, built from every message of the
+ * A JSON Schema for the JSON {@link PlayerJson} writes for one stream, built from every message of the
  * stream so that each of them validates: one stream can carry several layouts (a NACK with and
  * without a body, lists of different element shapes), so the schemas of its messages are merged
  * into their union. Objects have every member any message had and require those all of them had;
@@ -20,12 +20,12 @@ import org.stagecraft.player.codec.MessageBody;
  * that was NaN or infinite (null in the JSON) adds null; a value that was of different kinds is
  * {@code anyOf} them.
  */
-final class JsonSchemaOf {
-    private JsonSchemaOf() {
+public final class PlayerJsonSchema {
+    private PlayerJsonSchema() {
     }
 
     /** The schema of one value, or of several merged. */
-    static final class Node {
+    public static final class Node {
         /**
          * "integer", "number", "null" (a NaN or infinity, which JSON writes as null), "string",
          * "bytes", "object", "array", in the order first met.
@@ -44,7 +44,7 @@ final class JsonSchemaOf {
         }
 
         /** Merges {@code other} into this node; returns this. */
-        Node merge(Node other) {
+        public Node merge(Node other) {
             if (other == null) {
                 return this;
             }
@@ -148,7 +148,7 @@ final class JsonSchemaOf {
     }
 
     /** The schema of one message: its header and its body's fields. */
-    static Node of(MessageBody body) {
+    public static Node of(MessageBody body) {
         Node header = Node.of("object");
         header.member("timestamp", Node.of("number"));
         header.member("seq", Node.of("integer"));
@@ -162,7 +162,7 @@ final class JsonSchemaOf {
     }
 
     /** The schema text for a stream whose messages' schemas were merged into {@code node}. */
-    static String text(String title, Node node) {
+    public static String text(String title, Node node) {
         StringBuilder b = new StringBuilder(1024);
         b.append("{\"$schema\":\"https://json-schema.org/draft/2020-12/schema\",\"title\":");
         JsonText.string(b, title);

@@ -1,4 +1,4 @@
-package org.stagecraft.replay.export;
+package org.stagecraft.foxglove.player;
 
 /** JSON string and number text. */
 final class JsonText {

@@ -1,4 +1,4 @@
-package org.stagecraft.replay.export;
+package org.stagecraft.foxglove.player;
 
 import java.util.ArrayDeque;
 import java.util.Base64;
@@ -11,15 +11,19 @@ import org.stagecraft.player.wire.MessageHeader;
 /**
  * A decoded message as one JSON object: {@code header} (Player's timestamp, seq, host and robot),
  * then the body's fields by Player's names, numbers exact (a float32 as the shortest text of that
- * float), opaque bytes in base64.
+ * float), opaque bytes in base64. The MCAP export's Player channels, and the live view's.
  */
-final class JsonBody implements FieldVisitor {
+public final class PlayerJson implements FieldVisitor {
     private final StringBuilder b = new StringBuilder(1024);
     /** Per open object or array: whether something was written in it yet. */
     private final Deque<boolean[]> open = new ArrayDeque<>();
 
-    static String of(MessageHeader h, MessageBody body) {
-        JsonBody j = new JsonBody();
+    private PlayerJson() {
+    }
+
+    /** The message as JSON text. */
+    public static String of(MessageHeader h, MessageBody body) {
+        PlayerJson j = new PlayerJson();
         j.b.append("{\"header\":{\"timestamp\":");
         JsonText.number(j.b, h.timestamp(), false);
         j.b.append(",\"seq\":").append(h.seqUnsigned()).append(",\"host\":").append(h.hostUnsigned())
