@@ -16,11 +16,11 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 import java.util.function.Function;
 
-import org.stagecraft.foxglove.FoxgloveScene;
 import org.stagecraft.foxglove.FoxgloveSink;
 import org.stagecraft.foxglove.live.BusRelay;
 import org.stagecraft.foxglove.live.EndOfConnections;
 import org.stagecraft.foxglove.live.FoxgloveServer;
+import org.stagecraft.foxglove.live.LiveScene;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.wire.Direction;
@@ -44,8 +44,8 @@ final class SpyCommand {
             + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS] [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]]";
     private static final long OBSERVER_QUEUE_BYTES = 64L << 20;
 
-    /** The live view's converter: Player messages and spy diagnostics to Foxglove's schemas. */
-    static final Function<FoxgloveSink, Consumer<StreamMessage>> FOXGLOVE_SCENE = sink -> new FoxgloveScene(sink)::accept;
+    /** The live view's converter: the export's channels (Foxglove's schemas, and Player's own messages decoded). */
+    static final Function<FoxgloveSink, Consumer<StreamMessage>> FOXGLOVE_SCENE = LiveScene.converter();
 
     /**
      * @param foxglove      where to serve the live view, or null for none

@@ -11,13 +11,13 @@ import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.preferences.IEclipsePreferences.IPreferenceChangeListener;
 import org.stagecraft.core.streams.WorkbenchBus;
-import org.stagecraft.foxglove.FoxgloveScene;
 import org.stagecraft.foxglove.live.BusRelay;
 import org.stagecraft.foxglove.live.FoxgloveServer;
+import org.stagecraft.foxglove.live.LiveScene;
 
 /**
  * The workbench's live view in Foxglove: while the preference is on, a {@link FoxgloveServer} serves
- * what the workbench bus carries (every Robot Session's spy), converted by {@link FoxgloveScene} as in
+ * what the workbench bus carries (every Robot Session's spy), converted by {@link LiveScene} as in
  * {@code stagecraft spy --foxglove}. Follows the preferences: turning it on or off, or changing the
  * address, (re)starts or stops the server. One per workbench.
  */
@@ -70,8 +70,7 @@ public final class FoxgloveLive {
                 try {
                     InetSocketAddress a = FoxgloveLivePreferences.parse(address);
                     server = FoxgloveServer.start(a, "Stagecraft", FoxgloveServer.DEFAULT_MAX_QUEUED_FRAMES);
-                    relay = BusRelay.start(WorkbenchBus.get(), server, sink -> new FoxgloveScene(sink)::accept,
-                            BusRelay.DEFAULT_CAPACITY);
+                    relay = BusRelay.start(WorkbenchBus.get(), server, LiveScene.converter(), BusRelay.DEFAULT_CAPACITY);
                     servingAddress = address;
                     server.onNotice(n -> ILog.of(getClass()).log(new Status(IStatus.INFO, PLUGIN, "Foxglove live view: " + n)));
                 } catch (IOException | IllegalArgumentException e) {
