@@ -220,6 +220,7 @@ final class SpyCommand {
             Thread.currentThread().interrupt();
         }
         if (live != null) {
+            live.relay().awaitIdle(Duration.ofSeconds(10)); // what the spy saw before the stop still reaches the viewers
             live.relay().close();
             live.server().close();
         }

@@ -1,5 +1,7 @@
 package org.stagecraft.foxglove.live;
 
+import java.time.Duration;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.function.Function;
 
@@ -26,9 +28,13 @@ public final class BusRelay implements AutoCloseable {
     /** Messages that may wait for the converter: a few seconds of a busy multi-robot session. */
     public static final int DEFAULT_CAPACITY = 16_384;
 
+    private final StreamBus bus;
+    private final long publishedBefore;
     private final Subscription subscription;
 
-    private BusRelay(Subscription subscription) {
+    private BusRelay(StreamBus bus, long publishedBefore, Subscription subscription) {
+        this.bus = bus;
+        this.publishedBefore = publishedBefore;
         this.subscription = subscription;
     }
 
@@ -39,7 +45,7 @@ public final class BusRelay implements AutoCloseable {
             Function<FoxgloveSink, Consumer<StreamMessage>> converter, int capacity) {
         LiveChannels channels = new LiveChannels(sink);
         Consumer<StreamMessage> convert = converter.apply(channels);
-        return new BusRelay(bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(capacity), m -> {
+        return new BusRelay(bus, bus.published(), bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(capacity), m -> {
             switch (m.payload()) {
                 case ConnectionEnded end -> channels.connectionEnded(end.connection().id());
                 case SpyMessage s -> convert(channels, s.connection().id(), convert, m);
@@ -52,6 +58,23 @@ public final class BusRelay implements AutoCloseable {
     private static void convert(LiveChannels channels, int connection, Consumer<StreamMessage> convert, StreamMessage m) {
         channels.converting(connection);
         convert.accept(m);
+    }
+
+    /**
+     * Once the publisher has stopped (the spy closed, its pipeline drained): waits until the converter
+     * has taken every message published since the relay started, so that closing loses none.
+     *
+     * @return whether it got there within {@code timeout}
+     */
+    public boolean awaitIdle(Duration timeout) {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        while (subscription.delivered() + subscription.dropped() < bus.published() - publishedBefore) {
+            if (System.nanoTime() > deadline || subscription.isClosed()) {
+                return false;
+            }
+            LockSupport.parkNanos(1_000_000L); // the bus has no "drained" event; a stop is a rare moment
+        }
+        return true;
     }
 
     /** Bus messages converted so far. */
