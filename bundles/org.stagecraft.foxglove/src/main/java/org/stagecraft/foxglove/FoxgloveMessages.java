@@ -81,6 +81,7 @@ final class FoxgloveMessages {
     static final class Entity {
         private final JsonOut j = new JsonOut();
         private String open;
+        private final java.util.Set<String> done = new java.util.HashSet<>();
 
         Entity(long t, String frame, String id) {
             j.begin().beginArray("deletions").endArray().beginArray("entities").beginElement().time("timestamp", t)
@@ -90,6 +91,10 @@ final class FoxgloveMessages {
 
         private JsonOut in(String primitives) {
             if (!primitives.equals(open)) {
+                if (!done.add(primitives)) {
+                    // a second array of one kind would be a duplicate JSON member
+                    throw new IllegalStateException(primitives + " must be added together, before other primitives");
+                }
                 if (open != null) {
                     j.endArray();
                 }
@@ -99,7 +104,7 @@ final class FoxgloveMessages {
             return j;
         }
 
-        /** A box centred at (x, y, z), turned by yaw. Boxes must be added before triangles and texts. */
+        /** A box centred at (x, y, z), turned by yaw. Primitives of one kind are added one after the other. */
         Entity cube(double x, double y, double z, double yaw, double sx, double sy, double sz, double[] rgba) {
             in("cubes").beginElement().pose("pose", x, y, z, yaw).vector("size", sx, sy, sz)
                     .color("color", rgba[0], rgba[1], rgba[2], rgba[3]).end();
