@@ -22,7 +22,7 @@ final class DecodeCommand {
         EventJson json = new EventJson(new PlayerDecoder(CodecRegistry.standard()));
         BufferedWriter w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
         try {
-            Recordings.frame(file, e -> {
+            LogRecovery recovery = Recordings.frame(file, e -> {
                 try {
                     w.write(json.toJson(e));
                     w.write('\n');
@@ -31,7 +31,7 @@ final class DecodeCommand {
                 }
             });
             w.flush();
-            return 0;
+            return recovery.report("decode", file, err);
         } catch (IOException | UncheckedIOException e) {
             flushQuietly(w);
             err.println("stagecraft decode: " + e.getMessage());

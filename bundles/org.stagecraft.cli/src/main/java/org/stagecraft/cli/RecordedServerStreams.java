@@ -6,10 +6,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import org.stagecraft.demo.recorded.ChunkSource;
-import org.stagecraft.demo.recorded.PlayableConnection;
-import org.stagecraft.demo.recorded.TimedChunk;
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.recording.play.ChunkSource;
+import org.stagecraft.recording.play.PlayableConnection;
+import org.stagecraft.recording.play.TimedChunk;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;

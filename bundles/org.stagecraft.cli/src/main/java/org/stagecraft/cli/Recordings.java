@@ -33,17 +33,17 @@ final class Recordings {
         }
     }
 
-    /** Delivers every banner, message and unframed piece in order (a log's: log-time order). */
-    static void frame(Path file, Consumer<? super SessionEvent> sink) throws IOException {
+    /**
+     * Delivers every banner, message and unframed piece in order (a log's: log-time order). A damaged
+     * chunk of a spy log is skipped; @return what could not be read, for the command to report.
+     */
+    static LogRecovery frame(Path file, Consumer<? super SessionEvent> sink) throws IOException {
         if (!isSpyLog(file)) {
             TraceFraming.frame(file, sink);
-            return;
+            return LogRecovery.NONE;
         }
+        long entries = 0;
         try (SpyLogReader log = SpyLogReader.open(file)) {
-            if (log.recovered()) {
-                System.err.println("stagecraft: " + file + ": the log was not closed properly; read the "
-                        + log.chunkCount() + " complete chunks");
-            }
             Iterator<LogEntry> it = log.entries();
             while (true) {
                 LogEntry e;
@@ -55,11 +55,14 @@ final class Recordings {
                 } catch (UncheckedIOException ex) {
                     throw ex.getCause();
                 }
+                entries++;
                 if (e instanceof LogEntry.Wire w) {
                     sink.accept(new SessionEvent(w.timeNanos() / 1e9, new StreamId(w.conn(), w.port(), w.dir()),
                             event(w)));
                 }
             }
+            int intact = log.recovered() ? log.chunkCount() : log.chunkCount() - log.skippedChunks();
+            return new LogRecovery(log.recovered(), intact, log.damage(), entries);
         }
     }
 

@@ -13,8 +13,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 
-import org.stagecraft.demo.recorded.PlayableConnection;
-import org.stagecraft.demo.recorded.RecordedPlayer;
+import org.stagecraft.recording.play.PlayableConnection;
+import org.stagecraft.recording.play.RecordedPlayer;
 import org.stagecraft.replay.log.LogProblem;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.log.SessionLogs;

@@ -38,8 +38,9 @@ final class StatsCommand {
         PlayerDecoder decoder = new PlayerDecoder(registry);
         Map<Key, Tally> counts = new TreeMap<>();
         long[] totals = new long[5]; // messages, bytes, banners, unframed bytes, decode problems
+        LogRecovery recovery;
         try {
-            Recordings.frame(file, (SessionEvent e) -> {
+            recovery = Recordings.frame(file, (SessionEvent e) -> {
                 switch (e.event()) {
                     case WireEvent.Banner b -> totals[2]++;
                     case WireEvent.Unframed u -> totals[3] += u.length();
@@ -73,6 +74,6 @@ final class StatsCommand {
         }
         out.printf("total: %d messages, %d bytes, %d banners, %d unframed bytes, %d decode errors%n", totals[0],
                 totals[1], totals[2], totals[3], totals[4]);
-        return 0;
+        return recovery.report("stats", file, err);
     }
 }

@@ -27,7 +27,7 @@ import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.MessageType;
-import org.stagecraft.recording.peer.RecordedConnection;
+import org.stagecraft.recording.peers.RecordedConnection;
 import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.replay.fields.FlatFields;
 import org.stagecraft.replay.log.LogCursor;
@@ -231,7 +231,7 @@ class ExportAndReplayCommandsTest {
     }
 
     /** A stand-in connection: the mapping looks at ports only. */
-    private record Port(int port) implements org.stagecraft.demo.recorded.PlayableConnection {
+    private record Port(int port) implements org.stagecraft.recording.play.PlayableConnection {
         @Override
         public int conn() {
             return port;
@@ -243,12 +243,12 @@ class ExportAndReplayCommandsTest {
         }
 
         @Override
-        public org.stagecraft.demo.recorded.ChunkSource openServer() {
-            return org.stagecraft.demo.recorded.ChunkSource.of(List.of());
+        public org.stagecraft.recording.play.ChunkSource openServer() {
+            return org.stagecraft.recording.play.ChunkSource.of(List.of());
         }
 
         @Override
-        public org.stagecraft.demo.recorded.ChunkSource openClient() {
+        public org.stagecraft.recording.play.ChunkSource openClient() {
             return openServer();
         }
     }
@@ -258,7 +258,7 @@ class ExportAndReplayCommandsTest {
         java.util.Map<Integer, List<Port>> byPort = new java.util.LinkedHashMap<>();
         byPort.put(6665, List.of(new Port(6665)));
         byPort.put(6666, List.of(new Port(6666), new Port(6666)));
-        List<org.stagecraft.demo.recorded.RecordedPlayer.Listener> ls = ReplayCommand.listeners(
+        List<org.stagecraft.recording.play.RecordedPlayer.Listener> ls = ReplayCommand.listeners(
                 List.of("6666=127.0.0.1:7001", "7000"), byPort);
         assertEquals(2, ls.size());
         assertEquals(6666, ls.get(0).connections().get(0).port(), "PORT= picks the recorded port");

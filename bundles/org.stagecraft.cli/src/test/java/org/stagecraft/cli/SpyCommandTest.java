@@ -29,8 +29,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.stagecraft.player.wire.Direction;
-import org.stagecraft.recording.peer.RecordedConnection;
-import org.stagecraft.recording.peer.ReplayPeer;
+import org.stagecraft.recording.peers.RecordedConnection;
+import org.stagecraft.recording.peers.ReplayPeer;
 import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.spy.log.SpyLogReader;
 

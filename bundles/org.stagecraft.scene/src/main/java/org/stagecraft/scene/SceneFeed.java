@@ -3,6 +3,10 @@ package org.stagecraft.scene;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.stagecraft.player.msg.Position2d;
+import org.stagecraft.player.msg.Ranger;
+import org.stagecraft.player.msg.Sonar;
+import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamPattern;
@@ -15,10 +19,9 @@ import org.stagecraft.streams.Subscription;
  */
 public final class SceneFeed implements AutoCloseable {
     /** position2d DATA STATE of every robot. */
-    public static final StreamPattern POSES = StreamPattern.any().messageType(WorldModel.DATA).deviceType(4)
-            .subtype(WorldModel.POSITION_STATE);
+    public static final StreamPattern POSES = data(Position2d.CODE, Position2d.DATA_STATE);
     /** Every RESP_ACK: the model keeps the GET_GEOM and ranger GET_CONFIG replies among them. */
-    public static final StreamPattern REPLIES = StreamPattern.any().messageType(WorldModel.RESP_ACK);
+    public static final StreamPattern REPLIES = StreamPattern.any().messageType(MessageType.RESP_ACK.code());
 
     private final List<Subscription> subscriptions = new ArrayList<>();
 
@@ -29,15 +32,18 @@ public final class SceneFeed implements AutoCloseable {
             }
         }));
         for (StreamPattern p : new StreamPattern[] { REPLIES,
-                StreamPattern.any().messageType(WorldModel.DATA).deviceType(4).subtype(WorldModel.POSITION_DATA_GEOM),
-                StreamPattern.any().messageType(WorldModel.DATA).deviceType(5).subtype(WorldModel.SONAR_DATA_GEOM),
-                StreamPattern.any().messageType(WorldModel.DATA).deviceType(62).subtype(WorldModel.RANGER_DATA_GEOM) }) {
+                data(Position2d.CODE, Position2d.DATA_GEOM), data(Sonar.CODE, Sonar.DATA_GEOM),
+                data(Ranger.CODE, Ranger.DATA_GEOM) }) {
             subscriptions.add(bus.subscribe(p, DeliveryPolicy.lossless(1024), m -> {
                 if (world.accept(m)) {
                     onChange.run();
                 }
             }));
         }
+    }
+
+    private static StreamPattern data(int interf, int subtype) {
+        return StreamPattern.any().messageType(MessageType.DATA.code()).deviceType(interf).subtype(subtype);
     }
 
     @Override

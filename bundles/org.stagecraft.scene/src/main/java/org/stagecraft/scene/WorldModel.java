@@ -9,12 +9,15 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 
 import org.stagecraft.player.codec.MessageBody;
+import org.stagecraft.player.msg.Bumper;
+import org.stagecraft.player.msg.Fiducial;
 import org.stagecraft.player.msg.Geometry.DeviceGeom;
 import org.stagecraft.player.msg.Geometry.Pose3d;
 import org.stagecraft.player.msg.Laser;
 import org.stagecraft.player.msg.Position2d;
 import org.stagecraft.player.msg.Ranger;
 import org.stagecraft.player.msg.Sonar;
+import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.streams.StreamKey;
 import org.stagecraft.streams.StreamMessage;
 
@@ -24,9 +27,7 @@ import org.stagecraft.streams.StreamMessage;
  * read by the renderer on the UI thread: every accessor returns an immutable snapshot.
  */
 public final class WorldModel {
-    public static final int DATA = 1, RESP_ACK = 4;
-    public static final int GET_GEOM = 1, RANGER_GET_CONFIG = 5, POSITION_STATE = 1, POSITION_DATA_GEOM = 2,
-            SONAR_DATA_GEOM = 2, RANGER_DATA_GEOM = 5;
+    private static final int DATA = MessageType.DATA.code(), RESP_ACK = MessageType.RESP_ACK.code();
 
     private final int trailLength;
     private final Map<RobotId, Track> robots = new ConcurrentHashMap<>();
@@ -56,7 +57,7 @@ public final class WorldModel {
         if (isGeometry(k)) {
             geometries.put(dev, body);
         }
-        if (k.messageType() == DATA && k.deviceType() == Position2d.CODE && k.subtype() == POSITION_STATE
+        if (k.messageType() == DATA && k.deviceType() == Position2d.CODE && k.subtype() == Position2d.DATA_STATE
                 && body instanceof Position2d.State s) {
             robots.computeIfAbsent(dev.robot(), Track::new).pose(s, trailLength);
             changed = true;
@@ -73,12 +74,12 @@ public final class WorldModel {
         } else if (isGeometry(k) && body instanceof Sonar.Geom g) {
             mounts.put(dev, new Mount(Pose2.ORIGIN, 0, 0, poses(g.poses()), true));
             changed = true;
-        } else if (isGeometry(k) && body instanceof org.stagecraft.player.msg.Fiducial.Geom g) {
+        } else if (isGeometry(k) && body instanceof Fiducial.Geom g) {
             mounts.put(dev, new Mount(Pose2.of(g.pose()), finite(g.size().sl()), finite(g.size().sw()), List.of(), true));
             changed = true;
         } else if (isGeometry(k)) {
             changed = true; // e.g. bumper geometry: kept as it came, see geometry()
-        } else if (k.messageType() == RESP_ACK && k.deviceType() == Ranger.CODE && k.subtype() == RANGER_GET_CONFIG
+        } else if (k.messageType() == RESP_ACK && k.deviceType() == Ranger.CODE && k.subtype() == Ranger.REQ_GET_CONFIG
                 && body instanceof Ranger.Config c) {
             configs.put(dev, new RangerConfig(c.minAngle(), c.maxAngle(), c.angularRes(), c.minRange(), c.maxRange(), true));
             changed = true;
@@ -91,14 +92,18 @@ public final class WorldModel {
 
     /** GET_GEOM replies of any device, and the geometry DATA messages of position2d, sonar and ranger. */
     static boolean isGeometry(StreamKey k) {
+        int dev = k.deviceType(), subtype = k.subtype();
         if (k.messageType() == RESP_ACK) {
-            return k.subtype() == GET_GEOM && (k.deviceType() == Position2d.CODE || k.deviceType() == Laser.CODE
-                    || k.deviceType() == Ranger.CODE || k.deviceType() == Sonar.CODE || k.deviceType() == 10
-                    || k.deviceType() == 14);
+            return (dev == Position2d.CODE && subtype == Position2d.REQ_GET_GEOM)
+                    || (dev == Laser.CODE && subtype == Laser.REQ_GET_GEOM)
+                    || (dev == Ranger.CODE && subtype == Ranger.REQ_GET_GEOM)
+                    || (dev == Sonar.CODE && subtype == Sonar.REQ_GET_GEOM)
+                    || (dev == Fiducial.CODE && subtype == Fiducial.REQ_GET_GEOM)
+                    || (dev == Bumper.CODE && subtype == Bumper.REQ_GET_GEOM);
         }
-        return k.messageType() == DATA && ((k.deviceType() == Position2d.CODE && k.subtype() == POSITION_DATA_GEOM)
-                || (k.deviceType() == Sonar.CODE && k.subtype() == SONAR_DATA_GEOM)
-                || (k.deviceType() == Ranger.CODE && k.subtype() == RANGER_DATA_GEOM));
+        return k.messageType() == DATA && ((dev == Position2d.CODE && subtype == Position2d.DATA_GEOM)
+                || (dev == Sonar.CODE && subtype == Sonar.DATA_GEOM)
+                || (dev == Ranger.CODE && subtype == Ranger.DATA_GEOM));
     }
 
     /** Incremented by every change: a renderer rebuilds only when this or its data moved. */

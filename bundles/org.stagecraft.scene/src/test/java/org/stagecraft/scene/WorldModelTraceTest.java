@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
@@ -12,6 +13,9 @@ import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
 import org.stagecraft.player.msg.Position2d;
+import org.stagecraft.replay.log.SessionLog;
+import org.stagecraft.replay.log.SessionLogs;
+import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamKey;
 import org.stagecraft.streams.StreamMessage;
@@ -27,9 +31,16 @@ class WorldModelTraceTest {
         return Path.of(dir, name);
     }
 
+    /** What a replay of the recorded session publishes: the spy's messages under the spy's keys. */
+    static List<StreamMessage> recorded(String name) throws IOException {
+        try (SessionLog log = SessionLogs.open(trace(name))) {
+            return Replayer.allPublished(log);
+        }
+    }
+
     @Test
     void geometryRepliesMountTheSensorsAndPosesMoveTheRobot() throws Exception {
-        List<StreamMessage> msgs = TraceMessages.read(trace("pioneer-laser-sonar.gt.trace.jsonl"), PLAYER);
+        List<StreamMessage> msgs = recorded("pioneer-laser-sonar.gt.trace.jsonl");
         WorldModel w = new WorldModel(10_000);
         RobotId robot = new RobotId(PLAYER);
         DeviceAddress sonar = new DeviceAddress(robot, 62, 0);
@@ -68,7 +79,7 @@ class WorldModelTraceTest {
 
     @Test
     void feedsKeepOnlyTheNewestMessagePerStream() throws Exception {
-        List<StreamMessage> msgs = TraceMessages.read(trace("pioneer-laser-sonar.gt.trace.jsonl"), PLAYER);
+        List<StreamMessage> msgs = recorded("pioneer-laser-sonar.gt.trace.jsonl");
         CountDownLatch changed = new CountDownLatch(1);
         LayerFeed feed = new LayerFeed(changed::countDown);
         StreamBus bus = new StreamBus(Runnable::run); // delivery on the publisher's thread: deterministic

@@ -6,6 +6,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 
+import org.stagecraft.recording.play.RecordedPlayer;
+import org.stagecraft.recording.play.RecordingException;
+import org.stagecraft.recording.play.TimedConnection;
+import org.stagecraft.recording.play.TimedRecording;
 import org.stagecraft.tools.cfg.CfgException;
 import org.stagecraft.tools.cfg.PlayerCfg;
 

@@ -5,6 +5,8 @@ import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
+import org.stagecraft.recording.play.RecordedRobot;
+import org.stagecraft.recording.play.TimedRecording;
 
 /**
  * The recorded robot program as a program:

@@ -20,6 +20,11 @@ import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.stagecraft.recording.play.RecordedPlayer;
+import org.stagecraft.recording.play.RecordedRobot;
+import org.stagecraft.recording.play.TimedChunk;
+import org.stagecraft.recording.play.TimedConnection;
+import org.stagecraft.recording.play.TimedRecording;
 import org.stagecraft.tools.session.Ports;
 
 /** The recorded Player and robot program against each other and against a plain socket, on loopback. */

@@ -12,7 +12,11 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.stagecraft.recording.peer.RecordedConnection;
+import org.stagecraft.recording.peers.RecordedConnection;
+import org.stagecraft.recording.play.RecordingException;
+import org.stagecraft.recording.play.TimedChunk;
+import org.stagecraft.recording.play.TimedConnection;
+import org.stagecraft.recording.play.TimedRecording;
 
 class TimedRecordingTest {
     @TempDir

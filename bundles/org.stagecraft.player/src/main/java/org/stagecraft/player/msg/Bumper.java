@@ -15,6 +15,10 @@ import org.stagecraft.player.xdr.XdrWriter;
 /** Interface 14, "bumper" (014_bumper.def). */
 public final class Bumper {
     public static final int CODE = 14;
+    /** Subtype DATA 2: the bumpers' geometry, pushed. */
+    public static final int DATA_GEOM = 2;
+    /** Subtype REQ 1: asks for the geometry. */
+    public static final int REQ_GET_GEOM = 1;
 
     private Bumper() {
     }
@@ -22,8 +26,8 @@ public final class Bumper {
     static void register(CodecRegistry r) {
         r.registerInterface(CODE, "bumper");
         r.register(CODE, DATA, 1, "STATE", State::read);
-        r.register(CODE, DATA, 2, "GEOM", Geom::read);
-        r.register(CODE, REQ, 1, "GET_GEOM", Geom::read);
+        r.register(CODE, DATA, DATA_GEOM, "GEOM", Geom::read);
+        r.register(CODE, REQ, REQ_GET_GEOM, "GET_GEOM", Geom::read);
     }
 
     /** player_bumper_data: one byte per bumper, non-zero when pressed. */

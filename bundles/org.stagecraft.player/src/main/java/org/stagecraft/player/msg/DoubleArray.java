@@ -1,12 +1,11 @@
 package org.stagecraft.player.msg;
 
-import java.util.Arrays;
-
 /** An immutable array of 64-bit doubles (e.g. ranger ranges). */
-public final class DoubleArray {
+public final class DoubleArray extends NumberArray {
     private final double[] values;
 
     private DoubleArray(double[] values) {
+        super(values);
         this.values = values;
     }
 
@@ -19,10 +18,6 @@ public final class DoubleArray {
         return new DoubleArray(values);
     }
 
-    public int size() {
-        return values.length;
-    }
-
     public double get(int i) {
         return values[i];
     }
@@ -33,20 +28,5 @@ public final class DoubleArray {
 
     double[] raw() {
         return values;
-    }
-
-    @Override
-    public boolean equals(Object o) {
-        return o instanceof DoubleArray f && Arrays.equals(values, f.values);
-    }
-
-    @Override
-    public int hashCode() {
-        return Arrays.hashCode(values);
-    }
-
-    @Override
-    public String toString() {
-        return Arrays.toString(values);
     }
 }

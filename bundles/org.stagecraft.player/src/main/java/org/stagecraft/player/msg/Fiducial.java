@@ -17,6 +17,8 @@ import org.stagecraft.player.xdr.XdrWriter;
 /** Interface 10, "fiducial": detected markers (010_fiducial.def). */
 public final class Fiducial {
     public static final int CODE = 10;
+    /** Subtype REQ 1: asks for the geometry. */
+    public static final int REQ_GET_GEOM = 1;
 
     private Fiducial() {
     }
@@ -24,7 +26,7 @@ public final class Fiducial {
     static void register(CodecRegistry r) {
         r.registerInterface(CODE, "fiducial");
         r.register(CODE, DATA, 1, "SCAN", Scan::read);
-        r.register(CODE, REQ, 1, "GET_GEOM", Geom::read);
+        r.register(CODE, REQ, REQ_GET_GEOM, "GET_GEOM", Geom::read);
         r.register(CODE, REQ, 2, "GET_FOV", Fov::read);
         r.register(CODE, REQ, 3, "SET_FOV", Fov::read);
         r.register(CODE, REQ, 7, "GET_ID", Scalar.Uint32.decoder("id"));

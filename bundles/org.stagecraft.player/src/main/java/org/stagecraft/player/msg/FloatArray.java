@@ -1,12 +1,11 @@
 package org.stagecraft.player.msg;
 
-import java.util.Arrays;
-
 /** An immutable array of 32-bit floats (e.g. laser ranges). */
-public final class FloatArray {
+public final class FloatArray extends NumberArray {
     private final float[] values;
 
     private FloatArray(float[] values) {
+        super(values);
         this.values = values;
     }
 
@@ -19,10 +18,6 @@ public final class FloatArray {
         return new FloatArray(values);
     }
 
-    public int size() {
-        return values.length;
-    }
-
     public float get(int i) {
         return values[i];
     }
@@ -33,20 +28,5 @@ public final class FloatArray {
 
     float[] raw() {
         return values;
-    }
-
-    @Override
-    public boolean equals(Object o) {
-        return o instanceof FloatArray f && Arrays.equals(values, f.values);
-    }
-
-    @Override
-    public int hashCode() {
-        return Arrays.hashCode(values);
-    }
-
-    @Override
-    public String toString() {
-        return Arrays.toString(values);
     }
 }

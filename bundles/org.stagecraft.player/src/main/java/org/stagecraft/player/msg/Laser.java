@@ -14,6 +14,8 @@ import org.stagecraft.player.xdr.XdrWriter;
 /** Interface 6, "laser": single-origin scanning range finders (006_laser.def). */
 public final class Laser {
     public static final int CODE = 6;
+    /** Subtype REQ 1: asks for the geometry. */
+    public static final int REQ_GET_GEOM = 1;
 
     private Laser() {
     }
@@ -23,7 +25,7 @@ public final class Laser {
         r.register(CODE, DATA, 1, "SCAN", Scan::read);
         r.register(CODE, DATA, 2, "SCANPOSE", ScanPose::read);
         r.register(CODE, DATA, 3, "SCANANGLE", ScanAngle::read);
-        r.register(CODE, REQ, 1, "GET_GEOM", DeviceGeom::read);
+        r.register(CODE, REQ, REQ_GET_GEOM, "GET_GEOM", DeviceGeom::read);
         r.register(CODE, REQ, 2, "SET_CONFIG", Config::read);
         r.register(CODE, REQ, 3, "GET_CONFIG", Config::read);
         r.register(CODE, REQ, 4, "POWER", Scalar.Uint8.decoder("state"));

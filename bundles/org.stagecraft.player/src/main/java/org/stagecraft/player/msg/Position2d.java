@@ -15,19 +15,25 @@ import org.stagecraft.player.xdr.XdrWriter;
 /** Interface 4, "position2d": planar mobile bases (004_position2d.def). */
 public final class Position2d {
     public static final int CODE = 4;
+    /** Subtype DATA 1: the robot's odometric pose, velocity and stall. */
+    public static final int DATA_STATE = 1;
+    /** Subtype DATA 2: the base's geometry, pushed. */
+    public static final int DATA_GEOM = 2;
+    /** Subtype REQ 1: asks for the geometry; the reply carries it. */
+    public static final int REQ_GET_GEOM = 1;
 
     private Position2d() {
     }
 
     static void register(CodecRegistry r) {
         r.registerInterface(CODE, "position2d");
-        r.register(CODE, DATA, 1, "STATE", State::read);
-        r.register(CODE, DATA, 2, "GEOM", DeviceGeom::read);
+        r.register(CODE, DATA, DATA_STATE, "STATE", State::read);
+        r.register(CODE, DATA, DATA_GEOM, "GEOM", DeviceGeom::read);
         r.register(CODE, CMD, 1, "VEL", CmdVel::read);
         r.register(CODE, CMD, 2, "POS", CmdPos::read);
         r.register(CODE, CMD, 3, "CAR", CmdCar::read);
         r.register(CODE, CMD, 4, "VEL_HEAD", CmdCar::read);
-        r.register(CODE, REQ, 1, "GET_GEOM", DeviceGeom::read);
+        r.register(CODE, REQ, REQ_GET_GEOM, "GET_GEOM", DeviceGeom::read);
         r.register(CODE, REQ, 2, "MOTOR_POWER", Scalar.Uint8.decoder("state"));
         r.register(CODE, REQ, 3, "VELOCITY_MODE", Scalar.Uint32.decoder("value"));
         r.register(CODE, REQ, 4, "POSITION_MODE", Scalar.Uint32.decoder("state"));

@@ -16,6 +16,12 @@ import org.stagecraft.player.xdr.XdrWriter;
 /** Interface 62, "ranger": lasers, sonar rings, IR arrays (062_ranger.def, Player 3.1). */
 public final class Ranger {
     public static final int CODE = 62;
+    /** Subtype DATA 5: the device's and its elements' poses, pushed. */
+    public static final int DATA_GEOM = 5;
+    /** Subtype REQ 1: asks for the geometry. */
+    public static final int REQ_GET_GEOM = 1;
+    /** Subtype REQ 5: asks for the scan configuration (angles, resolution, range). */
+    public static final int REQ_GET_CONFIG = 5;
 
     private Ranger() {
     }
@@ -26,12 +32,12 @@ public final class Ranger {
         r.register(CODE, DATA, 2, "RANGESTAMPED", in -> Stamped.read(in, "ranges"));
         r.register(CODE, DATA, 3, "INTNS", in -> new Values("intensities", in.uint32(), Xdr.doubles(in)));
         r.register(CODE, DATA, 4, "INTNSSTAMPED", in -> Stamped.read(in, "intensities"));
-        r.register(CODE, DATA, 5, "GEOM", Geom::read);
-        r.register(CODE, REQ, 1, "GET_GEOM", Geom::read);
+        r.register(CODE, DATA, DATA_GEOM, "GEOM", Geom::read);
+        r.register(CODE, REQ, REQ_GET_GEOM, "GET_GEOM", Geom::read);
         r.register(CODE, REQ, 2, "POWER", Scalar.Uint8.decoder("state"));
         r.register(CODE, REQ, 3, "INTNS", Scalar.Uint8.decoder("state"));
         r.register(CODE, REQ, 4, "SET_CONFIG", Config::read);
-        r.register(CODE, REQ, 5, "GET_CONFIG", Config::read);
+        r.register(CODE, REQ, REQ_GET_CONFIG, "GET_CONFIG", Config::read);
     }
 
     /**

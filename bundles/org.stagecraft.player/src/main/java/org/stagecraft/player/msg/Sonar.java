@@ -15,6 +15,10 @@ import org.stagecraft.player.xdr.XdrWriter;
 /** Interface 5, "sonar": arrays of ultrasonic rangers (005_sonar.def). */
 public final class Sonar {
     public static final int CODE = 5;
+    /** Subtype DATA 2: the transducers' poses, pushed. */
+    public static final int DATA_GEOM = 2;
+    /** Subtype REQ 1: asks for the transducers' poses. */
+    public static final int REQ_GET_GEOM = 1;
 
     private Sonar() {
     }
@@ -22,8 +26,8 @@ public final class Sonar {
     static void register(CodecRegistry r) {
         r.registerInterface(CODE, "sonar");
         r.register(CODE, DATA, 1, "RANGES", Ranges::read);
-        r.register(CODE, DATA, 2, "GEOM", Geom::read);
-        r.register(CODE, REQ, 1, "GET_GEOM", Geom::read);
+        r.register(CODE, DATA, DATA_GEOM, "GEOM", Geom::read);
+        r.register(CODE, REQ, REQ_GET_GEOM, "GET_GEOM", Geom::read);
         r.register(CODE, REQ, 2, "POWER", Scalar.Uint8.decoder("state"));
     }
 

@@ -5,25 +5,25 @@ import java.util.Locale;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
-import org.stagecraft.player.wire.MessageType;
+import org.stagecraft.replay.log.HeaderNames;
 import org.stagecraft.replay.log.LogMessage;
 
 /**
  * The packet inspector's columns for one {@link LogMessage}, as text: time, connection, direction,
- * device, type, subtype, size and a one-line summary. Names come from the codec registry, so a
- * plug-in's interface shows by its name too.
+ * device, type, subtype, size and a one-line summary. Names are {@link HeaderNames}' (from the codec
+ * registry, so a plug-in's interface shows by its name too), the same the exports write.
  */
 public final class MessageColumns {
-    private final CodecRegistry registry;
+    private final HeaderNames names;
     private final MessageSummary summary;
 
     public MessageColumns(CodecRegistry registry) {
-        this.registry = registry;
+        this.names = new HeaderNames(registry);
         this.summary = new MessageSummary(registry);
     }
 
     public CodecRegistry registry() {
-        return registry;
+        return names.registry();
     }
 
     /** Seconds since {@code startNanos}, to the microsecond: "12.345678". */
@@ -55,8 +55,7 @@ public final class MessageColumns {
     }
 
     public String device(int interf, int index) {
-        String name = registry.interfaceName(interf);
-        return (name != null ? name : "interface" + interf) + ":" + index;
+        return names.device(interf, index);
     }
 
     /** The Player message type (DATA, CMD, REQ, RESP_ACK, SYNCH, RESP_NACK) or what else the entry is. */
@@ -68,8 +67,7 @@ public final class MessageColumns {
     }
 
     public static String type(int code) {
-        MessageType t = MessageType.of(code);
-        return t != null ? t.name() : "type" + code;
+        return HeaderNames.type(code);
     }
 
     /** Player's subtype name, e.g. "GET_GEOM", or the number when no layout names it. */
@@ -77,8 +75,7 @@ public final class MessageColumns {
         if (m.decoded() == null) {
             return "";
         }
-        MessageHeader h = m.decoded().header();
-        return registry.subtypeName(h.interf(), h.type(), h.subtype());
+        return names.subtype(m.decoded().header());
     }
 
     /** Bytes on the wire. */

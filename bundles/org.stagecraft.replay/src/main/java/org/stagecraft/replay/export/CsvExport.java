@@ -11,6 +11,7 @@ import java.util.Set;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.replay.fields.FlatFields;
+import org.stagecraft.replay.log.HeaderNames;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
@@ -41,16 +42,17 @@ public final class CsvExport {
         row(out, header);
         long[] rows = { 0 };
         List<String> cells = new ArrayList<>(header.size());
+        HeaderNames names = new HeaderNames(registry);
         forEach(log, filter, registry, m -> {
             MessageHeader h = m.decoded().header();
             cells.clear();
             cells.add(CellText.seconds(m.timeNanos()));
             cells.add(Integer.toString(m.connection().id()));
             cells.add(m.dir().label());
-            cells.add(Names.iface(registry, h.interf()));
+            cells.add(names.iface(h.interf()));
             cells.add(Integer.toString(h.index()));
-            cells.add(Names.type(h.type()));
-            cells.add(Names.subtype(registry, h));
+            cells.add(HeaderNames.type(h.type()));
+            cells.add(names.subtype(h));
             cells.add(Long.toString(h.sizeUnsigned()));
             cells.add(Double.toString(h.timestamp()));
             Map<String, Object> values = FlatFields.flatten(m.decoded().body());

@@ -8,6 +8,7 @@ import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.replay.fields.FlatFields;
+import org.stagecraft.replay.log.HeaderNames;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
@@ -84,8 +85,9 @@ public record ExportFilter(Double fromSeconds, Double untilSeconds, StreamPatter
     static String describe(LogMessage m, CodecRegistry registry) {
         MessageHeader h = m.decoded().header();
         StringBuilder b = new StringBuilder(256);
-        b.append(Names.iface(registry, h.interf())).append(':').append(h.index()).append(' ')
-                .append(Names.type(h.type())).append(' ').append(Names.subtype(registry, h)).append(' ')
+        HeaderNames names = new HeaderNames(registry);
+        b.append(names.device(h.interf(), h.index())).append(' ')
+                .append(HeaderNames.type(h.type())).append(' ').append(names.subtype(h)).append(' ')
                 .append(m.dir().label()).append(' ').append(m.connection().client()).append(' ')
                 .append(m.connection().listen());
         for (Map.Entry<String, Object> e : FlatFields.flatten(m.decoded().body()).entrySet()) {

@@ -2,24 +2,25 @@ package org.stagecraft.replay.export;
 
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.MessageHeader;
-import org.stagecraft.player.wire.MessageType;
+import org.stagecraft.replay.log.HeaderNames;
 
-/** Player's names for what a header says, or the numbers when there is no name. */
+/**
+ * The export's old entry to {@link HeaderNames}, kept only while {@code McapExport} (being reworked on
+ * another branch) still calls it; it names nothing itself. Remove it once McapExport uses HeaderNames.
+ */
 final class Names {
     private Names() {
     }
 
     static String iface(CodecRegistry registry, int interf) {
-        String n = registry.interfaceName(interf);
-        return n != null ? n : Integer.toString(interf);
+        return new HeaderNames(registry).iface(interf);
     }
 
     static String type(int type) {
-        MessageType t = MessageType.of(type);
-        return t != null ? t.name() : Integer.toString(type);
+        return HeaderNames.type(type);
     }
 
     static String subtype(CodecRegistry registry, MessageHeader h) {
-        return registry.subtypeName(h.interf(), h.type(), h.subtype());
+        return new HeaderNames(registry).subtype(h);
     }
 }

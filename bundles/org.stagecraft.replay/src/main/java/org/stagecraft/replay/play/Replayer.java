@@ -2,6 +2,7 @@ package org.stagecraft.replay.play;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.Condition;
@@ -11,6 +12,7 @@ import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamMessage;
 
 /**
  * Plays a {@link SessionLog} into a {@link StreamBus}: each message is published as
@@ -63,6 +65,21 @@ public final class Replayer implements AutoCloseable {
         this.thread = Thread.ofPlatform().daemon().name("stagecraft-replay " + log.path().getFileName())
                 .unstarted(this::run);
         thread.start();
+    }
+
+    /**
+     * Every bus message a play of {@code log} from its start to its end publishes, in order, at once:
+     * no pacing and no thread (tests and benchmarks that feed a model directly). Memory grows with the
+     * log, so this is for small logs.
+     */
+    public static List<StreamMessage> allPublished(SessionLog log) throws IOException {
+        List<StreamMessage> out = new ArrayList<>();
+        try (LogCursor all = log.cursor(log.startNanos())) {
+            for (LogMessage m = all.next(); m != null; m = all.next()) {
+                m.toStreamMessage().ifPresent(out::add);
+            }
+        }
+        return out;
     }
 
     /** Plays from the current position at the current speed. */

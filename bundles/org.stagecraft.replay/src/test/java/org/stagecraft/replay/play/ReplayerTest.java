@@ -87,6 +87,15 @@ class ReplayerTest {
         }
     }
 
+    @Test
+    void allPublishedIsWhatAPlayFromStartToEndPublishes() throws Exception {
+        List<StreamMessage> got = Replayer.allPublished(log);
+        assertEquals(expected.size(), got.size());
+        for (int i = 0; i < expected.size(); i++) {
+            assertSameMessage(expected.get(i), got.get(i), "message " + i);
+        }
+    }
+
     @ParameterizedTest
     @ValueSource(doubles = { 1, 0.1, 4, 16 })
     void playPublishesEveryMessageInOrderAtTheRecordedPaceScaledBySpeed(double speed) throws Exception {

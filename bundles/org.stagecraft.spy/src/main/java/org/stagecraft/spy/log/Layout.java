@@ -16,37 +16,32 @@ final class Layout {
     private Layout() {
     }
 
-    static final String PROFILE = "x-stagecraft-spy";
-    static final String LIBRARY = "stagecraft spy log 1";
+    /**
+     * The header's profile: none. MCAP's tools warn about any profile but their well-known ones
+     * ("ros1", "ros2"); a spy log is told by its session metadata ({@link #METADATA_SESSION}).
+     * Logs written before version 2 say "x-stagecraft-spy".
+     */
+    static final String PROFILE = "";
+    static final String LIBRARY = "stagecraft spy log 2";
 
-    static final int SCHEMA_WIRE = 1;
-    static final String SCHEMA_WIRE_NAME = "player.Message";
-    static final int SCHEMA_EVENT = 2;
     static final String SCHEMA_EVENT_NAME = "stagecraft.SpyEvent";
-
-    static final String WIRE_ENCODING = "x-player-xdr";
     static final String EVENT_ENCODING = "json";
-
-    static final int CHANNEL_EVENTS = 1;
     static final String TOPIC_EVENTS = "/events";
-    static final int FIRST_WIRE_CHANNEL = 2;
+
+    /** Wire and hold channels: protobuf messages (see {@link WireProto}). */
+    static final String PROTOBUF = "protobuf";
+    /** The wire channels' encoding in logs written before version 2 (no schema, see docs/spy-log.md). */
+    static final String OLD_WIRE_ENCODING = "x-player-xdr";
 
     static final String METADATA_SESSION = "stagecraft.session";
 
     /**
      * Stagecraft's own channel: what a robot hold injected or held back (docs/debugging-robots.md).
-     * One channel for the whole log; each message names its connection. Its id is taken from the top
-     * of the id space like {@link SpyLogWriter#addChannel}'s, so wire channels keep their ids.
+     * One channel for the whole log; each message names its connection.
      */
     static final String TOPIC_HOLD = "/stagecraft/hold";
-    static final String HOLD_ENCODING = "x-stagecraft-hold";
-    static final String SCHEMA_HOLD_NAME = "stagecraft.Hold";
-
-    /** conn u32, port u32, action u8, program offset u64, upstream offset u64, text length u16 (all LE) */
-    static final int HOLD_PREFIX = 4 + 4 + 1 + 8 + 8 + 2;
-
-    /** offset u64, kind u8, reason length u16 */
-    static final int WIRE_PREFIX = 8 + 1 + 2;
+    /** The hold channel's encoding in logs written before version 2. */
+    static final String OLD_HOLD_ENCODING = "x-stagecraft-hold";
 
     static final String EVENT_SCHEMA_JSON = """
             {"$schema":"https://json-schema.org/draft/2020-12/schema","title":"Stagecraft spy event",\

@@ -2,7 +2,11 @@ package org.stagecraft.spy.log;
 
 import org.stagecraft.player.wire.Direction;
 
-/** One record of a spy log, in log-time order. Times are the spy's receive times in nanoseconds. */
+/**
+ * One record of a spy log, in log-time order. Times are epoch nanoseconds: the log time, which is the
+ * spy's receive time except that it never goes back in the file (see {@link SpyLogWriter}); a wire
+ * entry also has its exact receive time, {@link Wire#captureNanos()}.
+ */
 public sealed interface LogEntry {
 
     long timeNanos();
@@ -31,13 +35,21 @@ public sealed interface LogEntry {
     /**
      * Exactly the wire bytes of one framer event, at its offset in its stream (connection + direction).
      *
-     * @param reason why the bytes are {@link Kind#UNFRAMED}; empty for banners and frames
+     * @param reason       why the bytes are {@link Kind#UNFRAMED}; empty for banners and frames
+     * @param captureNanos when the spy received the bytes, exactly (MCAP's publish time); equal to
+     *                     {@code timeNanos} unless another thread's entry was logged before with a later time
      */
     record Wire(long timeNanos, int conn, int port, Direction dir, long streamOffset, Kind kind, byte[] bytes,
-            String reason) implements LogEntry {
+            String reason, long captureNanos) implements LogEntry {
         public Wire {
             bytes = bytes.clone();
             reason = reason == null ? "" : reason;
+        }
+
+        /** An entry captured at its log time. */
+        public Wire(long timeNanos, int conn, int port, Direction dir, long streamOffset, Kind kind, byte[] bytes,
+                String reason) {
+            this(timeNanos, conn, port, dir, streamOffset, kind, bytes, reason, timeNanos);
         }
 
         /** A fresh copy of the bytes. */

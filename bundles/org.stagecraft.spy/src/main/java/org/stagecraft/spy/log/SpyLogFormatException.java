@@ -1,9 +1,8 @@
 package org.stagecraft.spy.log;
 
-import java.io.IOException;
 
 /** A spy log whose bytes are not what its format says (not MCAP, a corrupt record, a bad CRC). */
-public final class SpyLogFormatException extends IOException {
+public final class SpyLogFormatException extends org.stagecraft.mcap.McapFormatException {
     private static final long serialVersionUID = 1L;
 
     public SpyLogFormatException(String message) {

@@ -1,73 +1,92 @@
 package org.stagecraft.spy.log;
 
 import java.io.ByteArrayOutputStream;
-import java.io.EOFException;
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.ByteBuffer;
-import java.nio.channels.FileChannel;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.Comparator;
 import java.util.HashSet;
 import java.util.Iterator;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.NoSuchElementException;
 import java.util.PriorityQueue;
 import java.util.Set;
 import java.util.TreeMap;
-import java.util.zip.CRC32;
 
+import org.stagecraft.mcap.Channel;
+import org.stagecraft.mcap.ChunkInfo;
+import org.stagecraft.mcap.Damage;
+import org.stagecraft.mcap.Mcap;
+import org.stagecraft.mcap.McapFormatException;
+import org.stagecraft.mcap.McapReader;
+import org.stagecraft.mcap.Message;
+import org.stagecraft.mcap.RecordInput;
+import org.stagecraft.mcap.Schema;
 import org.stagecraft.player.wire.Direction;
 
-import com.github.luben.zstd.Zstd;
-
 /**
- * Reads a spy log written by {@link SpyLogWriter}. A complete file is opened through its summary
- * (chunk index, statistics, channels) without reading the chunks; a file that was cut off (the spy
- * crashed, the disk filled up) or whose summary is damaged is scanned from the start instead, and
- * every complete chunk whose CRC holds is recovered ({@link #recovered()}). Chunks are read and
- * decompressed only when entries are asked for.
+ * Reads a spy log written by {@link SpyLogWriter} (this version's or an earlier one's). The MCAP side
+ * (summary, chunks, CRCs, recovery of a file that was cut off or damaged) is {@link McapReader}'s; this
+ * class is the layout: which channels are wire streams, events and holds, and what their messages
+ * hold. Chunks are read and decompressed only when entries are asked for. A damaged chunk met while
+ * reading entries is skipped and listed in {@link #damage()}.
  */
 public final class SpyLogReader implements AutoCloseable {
-    private static final int MAX_RECORD = Integer.MAX_VALUE - 64;
 
-    private record ChannelInfo(int id, String topic, String encoding, boolean events, int conn, int port,
-            Direction dir, Map<String, String> metadata) {
-        /** Stagecraft's own robot-hold channel (not a wire channel, not in {@link SpyLogReader#entries()}). */
+    /** What a channel of the log is to the layout. */
+    private enum Role {
+        EVENTS, WIRE, OLD_WIRE, HOLD, OLD_HOLD, OTHER
+    }
+
+    private record ChannelInfo(int id, String topic, Role role, int conn, int port, Direction dir,
+            Map<String, String> metadata) {
+        boolean wire() {
+            return role == Role.WIRE || role == Role.OLD_WIRE;
+        }
+
         boolean hold() {
-            return Layout.HOLD_ENCODING.equals(encoding) && Layout.TOPIC_HOLD.equals(topic);
+            return role == Role.HOLD || role == Role.OLD_HOLD;
+        }
+
+        boolean events() {
+            return role == Role.EVENTS;
         }
     }
 
-    /** A chunk of the file; {@code channels} is null when the file does not say. */
-    private record ChunkRef(int seq, long start, long end, long offset, long length, Set<Integer> channels) {
-    }
-
     private final Path path;
-    private final FileChannel file;
-    private final long size;
+    private final McapReader mcap;
     private final Map<Integer, ChannelInfo> channels = new TreeMap<>();
-    private final List<ChunkRef> chunks = new ArrayList<>();
-    private Map<String, String> metadata = Map.of();
+    private final List<ChunkInfo> chunks;
+    private final Map<String, String> metadata;
     private long wireCount;
     private long eventCount;
-    private long startTime;
-    private long endTime;
-    private boolean recovered;
-    private int skippedChunks;
+    private long undefinedMessages;
     private int chunksRead;
     private List<LogConnection> connections;
 
-    private SpyLogReader(Path path, FileChannel file) throws IOException {
+    private SpyLogReader(Path path, McapReader mcap) throws IOException {
         this.path = path;
-        this.file = file;
-        this.size = file.size();
+        this.mcap = mcap;
+        this.chunks = mcap.chunks();
+        this.metadata = mcap.metadata().getOrDefault(Layout.METADATA_SESSION, Map.of());
+        for (Channel c : mcap.channels().values()) {
+            channel(c);
+        }
+        for (Map.Entry<Integer, Long> e : mcap.messageCounts().entrySet()) {
+            ChannelInfo c = channels.get(e.getKey());
+            if (c == null) {
+                undefinedMessages += e.getValue();
+            } else if (c.events()) {
+                eventCount += e.getValue();
+            } else if (c.wire()) {
+                wireCount += e.getValue();
+            }
+        }
     }
 
     /**
@@ -77,384 +96,138 @@ public final class SpyLogReader implements AutoCloseable {
      * @throws SpyLogFormatException if the file is not an MCAP file
      */
     public static SpyLogReader open(Path file) throws IOException {
-        FileChannel ch = FileChannel.open(file, StandardOpenOption.READ);
+        McapReader r;
         try {
-            SpyLogReader r = new SpyLogReader(file, ch);
-            r.load();
-            return r;
+            r = McapReader.open(file);
+        } catch (McapFormatException e) {
+            throw new SpyLogFormatException(e.getMessage(), e);
+        }
+        try {
+            return new SpyLogReader(file, r);
         } catch (IOException | RuntimeException e) {
-            ch.close();
+            r.close();
             throw e;
         }
     }
 
     /** True if the file starts with MCAP's magic bytes. */
     public static boolean isMcap(byte[] head) {
-        return head.length >= Mcap.MAGIC.length
-                && Arrays.equals(head, 0, Mcap.MAGIC.length, Mcap.MAGIC, 0, Mcap.MAGIC.length);
+        return Mcap.isMcap(head);
     }
 
-    private void load() throws IOException {
-        if (size < Mcap.MAGIC.length || !isMcap(readAt(0, Mcap.MAGIC.length))) {
-            throw new SpyLogFormatException(path + ": not an MCAP file (no MCAP magic bytes at its start)");
-        }
-        Boolean summary;
-        try {
-            summary = readSummary();
-        } catch (SpyLogFormatException e) {
-            summary = null; // damaged summary: scan
-        }
-        if (summary == null || !summary) {
-            channels.clear();
-            chunks.clear();
-            metadata = Map.of();
-            boolean complete = scan();
-            recovered = summary == null || !complete;
-        }
-    }
-
-    // --- the indexed way -------------------------------------------------------------------------
-
-    /** @return true if the summary was read, false if the file has a footer but no summary, null if no valid footer */
-    private Boolean readSummary() throws IOException {
-        if (size < Mcap.MAGIC.length + Mcap.TAIL) {
-            return null;
-        }
-        long footerPos = size - Mcap.TAIL;
-        byte[] tail = readAt(footerPos, Mcap.TAIL);
-        if (!Arrays.equals(tail, Mcap.RECORD_PREFIX + Mcap.FOOTER_CONTENT, Mcap.TAIL, Mcap.MAGIC, 0, 8)
-                || tail[0] != Mcap.OP_FOOTER || Mcap.readU64(tail, 1) != Mcap.FOOTER_CONTENT) {
-            return null;
-        }
-        long summaryStart = Mcap.readU64(tail, 9);
-        long summaryOffsetStart = Mcap.readU64(tail, 17);
-        long crc = new Mcap.In(tail, 25, 4).u32();
-        if (summaryStart == 0) {
-            return false;
-        }
-        if (summaryStart < Mcap.MAGIC.length || summaryStart > footerPos || footerPos - summaryStart > MAX_RECORD) {
-            throw new SpyLogFormatException("summary start out of the file");
-        }
-        byte[] sum = readAt(summaryStart, (int) (footerPos - summaryStart));
-        if (crc != 0) {
-            CRC32 c = new CRC32();
-            c.update(sum);
-            c.update(tail, 0, 25);
-            if (c.getValue() != crc) {
-                throw new SpyLogFormatException("summary CRC mismatch");
-            }
-        }
-        long end = summaryOffsetStart != 0 ? summaryOffsetStart : footerPos;
-        if (end < summaryStart || end > footerPos) {
-            throw new SpyLogFormatException("summary offset start out of the summary");
-        }
-        Mcap.In in = new Mcap.In(sum, 0, (int) (end - summaryStart));
-        boolean statistics = false;
-        Map<Integer, Long> counts = Map.of();
-        List<long[]> metadataAt = new ArrayList<>();
-        while (in.remaining() > 0) {
-            int op = in.u8();
-            long len = in.u64();
-            if (len > in.remaining()) {
-                throw new SpyLogFormatException("summary record runs past the summary");
-            }
-            Mcap.In r = new Mcap.In(sum, in.pos(), (int) len);
-            switch (op) {
-                case Mcap.OP_CHANNEL -> channel(r);
-                case Mcap.OP_CHUNK_INDEX -> {
-                    long start = r.u64();
-                    long stop = r.u64();
-                    long offset = r.u64();
-                    long length = r.u64();
-                    int mapLen = r.length32();
-                    Set<Integer> ids = new HashSet<>();
-                    Mcap.In m = new Mcap.In(sum, r.pos(), mapLen);
-                    while (m.remaining() > 0) {
-                        ids.add(m.u16());
-                        m.u64();
-                    }
-                    r.skip(mapLen);
-                    if (offset < Mcap.MAGIC.length || length > size || offset > size - length) {
-                        throw new SpyLogFormatException("chunk index points outside the file");
-                    }
-                    chunks.add(new ChunkRef(chunks.size(), start, stop, offset, length, ids.isEmpty() ? null : ids));
-                }
-                case Mcap.OP_STATISTICS -> {
-                    r.u64(); // message count (events included)
-                    r.u16();
-                    r.u32();
-                    r.u32();
-                    r.u32();
-                    r.u32();
-                    startTime = r.u64();
-                    endTime = r.u64();
-                    int mapLen = r.length32();
-                    Mcap.In m = new Mcap.In(sum, r.pos(), mapLen);
-                    counts = new LinkedHashMap<>();
-                    while (m.remaining() > 0) {
-                        counts.put(m.u16(), m.u64());
-                    }
-                    statistics = true;
-                }
-                case Mcap.OP_METADATA_INDEX -> {
-                    long offset = r.u64();
-                    long length = r.u64();
-                    metadataAt.add(new long[] { offset, length });
-                }
-                default -> {
-                    // schemas, summary offsets, unknown records: not needed
-                }
-            }
-            in.skip((int) len);
-        }
-        if (!statistics) {
-            return false; // another writer's file: count by scanning
-        }
-        for (Map.Entry<Integer, Long> e : counts.entrySet()) {
-            ChannelInfo c = channels.get(e.getKey());
-            if (c != null && c.events()) {
-                eventCount += e.getValue();
-            } else if (c != null && c.dir() != null) {
-                wireCount += e.getValue();
-            }
-        }
-        for (long[] m : metadataAt) {
-            if (m[1] < Mcap.RECORD_PREFIX || m[1] > MAX_RECORD || m[0] > size - m[1]) {
-                throw new SpyLogFormatException("metadata index points outside the file");
-            }
-            byte[] rec = readAt(m[0], (int) m[1]);
-            if (rec[0] != Mcap.OP_METADATA) {
-                throw new SpyLogFormatException("metadata index does not point at a metadata record");
-            }
-            metadata(new Mcap.In(rec, Mcap.RECORD_PREFIX, rec.length - Mcap.RECORD_PREFIX));
-        }
-        return true;
-    }
-
-    // --- the recovering way ----------------------------------------------------------------------
-
-    /** Reads the file record by record; @return true if it reached the Data End record. */
-    private boolean scan() throws IOException {
-        long pos = Mcap.MAGIC.length;
-        long start = Long.MAX_VALUE;
-        long stop = Long.MIN_VALUE;
-        while (pos + Mcap.RECORD_PREFIX <= size) {
-            byte[] pre = readAt(pos, Mcap.RECORD_PREFIX);
-            int op = pre[0] & 0xff;
-            long len = Mcap.readU64(pre, 1);
-            if (len > size - pos - Mcap.RECORD_PREFIX || len > MAX_RECORD) {
-                // cut off inside this record: the times still come from the chunks recovered so far
-                startTime = chunks.isEmpty() ? 0 : start;
-                endTime = chunks.isEmpty() ? 0 : stop;
-                return false;
-            }
-            long body = pos + Mcap.RECORD_PREFIX;
-            switch (op) {
-                case Mcap.OP_CHUNK -> {
-                    byte[] rec = readAt(body, (int) len);
-                    Set<Integer> ids = new HashSet<>();
-                    long[] times = { Long.MAX_VALUE, Long.MIN_VALUE };
-                    try {
-                        byte[] records = decompress(rec);
-                        records(records, (op2, r) -> {
-                            if (op2 == Mcap.OP_CHANNEL) {
-                                channel(r);
-                            } else if (op2 == Mcap.OP_MESSAGE) {
-                                int ch = r.u16();
-                                r.u32();
-                                long t = r.u64();
-                                ids.add(ch);
-                                times[0] = Math.min(times[0], t);
-                                times[1] = Math.max(times[1], t);
-                                ChannelInfo c = channels.get(ch);
-                                if (c == null) {
-                                    throw new SpyLogFormatException("message on an undefined channel " + ch);
-                                }
-                                if (c.events()) {
-                                    eventCount++;
-                                } else if (c.dir() != null) {
-                                    wireCount++;
-                                }
-                            }
-                        });
-                    } catch (SpyLogFormatException e) {
-                        skippedChunks++; // damaged chunk: its messages are lost, the others are not
-                        pos = body + len;
-                        continue;
-                    }
-                    if (!ids.isEmpty()) {
-                        chunks.add(new ChunkRef(chunks.size(), times[0], times[1], pos, Mcap.RECORD_PREFIX + len, ids));
-                        start = Math.min(start, times[0]);
-                        stop = Math.max(stop, times[1]);
-                    }
-                }
-                case Mcap.OP_CHANNEL -> channel(new Mcap.In(readAt(body, (int) len), 0, (int) len));
-                case Mcap.OP_METADATA -> metadata(new Mcap.In(readAt(body, (int) len), 0, (int) len));
-                case Mcap.OP_DATA_END, Mcap.OP_FOOTER -> {
-                    startTime = chunks.isEmpty() ? 0 : start;
-                    endTime = chunks.isEmpty() ? 0 : stop;
-                    return true;
-                }
-                default -> {
-                    // header, message indexes, unknown records
-                }
-            }
-            pos = body + len;
-        }
-        startTime = chunks.isEmpty() ? 0 : start;
-        endTime = chunks.isEmpty() ? 0 : stop;
-        return false;
-    }
-
-    // --- records ---------------------------------------------------------------------------------
-
-    private interface RecordVisitor {
-        void record(int opcode, Mcap.In content) throws SpyLogFormatException;
-    }
-
-    private static void records(byte[] records, RecordVisitor v) throws SpyLogFormatException {
-        Mcap.In in = new Mcap.In(records, 0, records.length);
-        while (in.remaining() > 0) {
-            int op = in.u8();
-            long len = in.u64();
-            if (len > in.remaining()) {
-                throw new SpyLogFormatException("record runs past its chunk");
-            }
-            v.record(op, new Mcap.In(records, in.pos(), (int) len));
-            in.skip((int) len);
-        }
-    }
-
-    private void channel(Mcap.In r) throws SpyLogFormatException {
-        int id = r.u16();
-        r.u16();
-        String topic = r.string();
-        String encoding = r.string();
-        int mapLen = r.length32();
-        Map<String, String> meta = new LinkedHashMap<>();
-        Mcap.In m = new Mcap.In(r.array(), r.pos(), mapLen);
-        while (m.remaining() > 0) {
-            meta.put(m.string(), m.string());
-        }
-        if (channels.containsKey(id)) {
+    /** Knows a channel by its encoding and schema (ids are not part of the layout). */
+    private void channel(Channel c) throws SpyLogFormatException {
+        if (channels.containsKey(c.id())) {
             return;
         }
-        boolean events = Layout.EVENT_ENCODING.equals(encoding) && Layout.TOPIC_EVENTS.equals(topic);
+        Schema schema = c.schemaId() == 0 ? null : mcap.schemas().get(c.schemaId());
+        String schemaName = schema == null ? "" : schema.name();
+        Role role;
+        if (Layout.EVENT_ENCODING.equals(c.messageEncoding()) && Layout.TOPIC_EVENTS.equals(c.topic())) {
+            role = Role.EVENTS;
+        } else if (Layout.PROTOBUF.equals(c.messageEncoding()) && WireProto.WIRE_MESSAGE.equals(schemaName)) {
+            role = Role.WIRE;
+        } else if (Layout.OLD_WIRE_ENCODING.equals(c.messageEncoding())) {
+            role = Role.OLD_WIRE;
+        } else if (Layout.PROTOBUF.equals(c.messageEncoding()) && WireProto.HOLD_ACTION.equals(schemaName)) {
+            role = Role.HOLD;
+        } else if (Layout.OLD_HOLD_ENCODING.equals(c.messageEncoding()) && Layout.TOPIC_HOLD.equals(c.topic())) {
+            role = Role.OLD_HOLD;
+        } else {
+            role = Role.OTHER;
+        }
         int conn = -1;
         int port = -1;
         Direction dir = null;
-        if (Layout.WIRE_ENCODING.equals(encoding)) {
+        if (role == Role.WIRE || role == Role.OLD_WIRE) {
             try {
-                conn = Integer.parseInt(meta.get("conn"));
-                port = Integer.parseInt(meta.get("port"));
-                dir = Direction.fromLabel(meta.get("dir"));
+                conn = Integer.parseInt(c.metadata().get("conn"));
+                port = Integer.parseInt(c.metadata().get("port"));
+                dir = Direction.fromLabel(c.metadata().get("dir"));
             } catch (RuntimeException e) {
-                throw new SpyLogFormatException("wire channel " + id + " without conn/port/dir metadata", e);
+                throw new SpyLogFormatException(path + ": wire channel " + c.id() + " without conn/port/dir metadata", e);
             }
         }
-        channels.put(id, new ChannelInfo(id, topic, encoding, events, conn, port, dir, Map.copyOf(meta)));
-    }
-
-    private void metadata(Mcap.In r) throws SpyLogFormatException {
-        String name = r.string();
-        int mapLen = r.length32();
-        Map<String, String> meta = new LinkedHashMap<>();
-        Mcap.In m = new Mcap.In(r.array(), r.pos(), mapLen);
-        while (m.remaining() > 0) {
-            meta.put(m.string(), m.string());
-        }
-        if (Layout.METADATA_SESSION.equals(name)) {
-            metadata = Collections.unmodifiableMap(meta);
-        }
-    }
-
-    /** The chunk's records, decompressed and CRC-checked; {@code rec} is the chunk record's content. */
-    private static byte[] decompress(byte[] rec) throws SpyLogFormatException {
-        Mcap.In in = new Mcap.In(rec, 0, rec.length);
-        in.u64();
-        in.u64();
-        long rawSize = in.u64();
-        long crc = in.u32();
-        String compression = in.string();
-        long packedSize = in.u64();
-        if (packedSize > in.remaining() || rawSize > MAX_RECORD) {
-            throw new SpyLogFormatException("chunk sizes out of range");
-        }
-        byte[] raw;
-        switch (compression) {
-            case "" -> raw = in.bytes((int) packedSize);
-            case "zstd" -> {
-                try {
-                    raw = Zstd.decompress(Arrays.copyOfRange(rec, in.pos(), in.pos() + (int) packedSize), (int) rawSize);
-                } catch (RuntimeException e) {
-                    throw new SpyLogFormatException("chunk does not decompress (" + e.getMessage() + ")", e);
-                }
-            }
-            default -> throw new SpyLogFormatException("chunk compression \"" + compression + "\" is not supported");
-        }
-        if (raw.length != rawSize) {
-            throw new SpyLogFormatException("chunk decompressed to " + raw.length + " bytes, expected " + rawSize);
-        }
-        if (crc != 0) {
-            CRC32 c = new CRC32();
-            c.update(raw);
-            if (c.getValue() != crc) {
-                throw new SpyLogFormatException("chunk CRC mismatch");
-            }
-        }
-        return raw;
+        channels.put(c.id(), new ChannelInfo(c.id(), c.topic(), role, conn, port, dir, c.metadata()));
     }
 
     private record Item(LogEntry entry, int chunk, int index) {
     }
 
     /** Every entry of one chunk, in file order. */
-    private List<LogEntry> readChunk(ChunkRef c) throws IOException {
+    private List<LogEntry> readChunk(ChunkInfo c) throws IOException {
         return readChunk(c, null);
     }
 
     /** The same, and the chunk's robot-hold entries into {@code holds} when it is not null. */
-    private List<LogEntry> readChunk(ChunkRef c, List<HoldEntry> holds) throws IOException {
-        if (c.length() < Mcap.RECORD_PREFIX || c.length() > MAX_RECORD) {
-            throw new SpyLogFormatException("chunk length out of range");
-        }
-        byte[] rec = readAt(c.offset(), (int) c.length());
-        if (rec[0] != Mcap.OP_CHUNK || Mcap.readU64(rec, 1) != c.length() - Mcap.RECORD_PREFIX) {
-            throw new SpyLogFormatException(path + ": no chunk at offset " + c.offset());
-        }
+    private List<LogEntry> readChunk(ChunkInfo c, List<HoldEntry> holds) throws IOException {
         chunksRead++;
-        byte[] raw;
-        try {
-            raw = decompress(Arrays.copyOfRange(rec, Mcap.RECORD_PREFIX, rec.length));
-        } catch (SpyLogFormatException e) {
-            throw new SpyLogFormatException(path + ": chunk at offset " + c.offset() + ": " + e.getMessage(), e);
-        }
         List<LogEntry> out = new ArrayList<>();
-        records(raw, (op, r) -> {
-            if (op == Mcap.OP_CHANNEL) {
-                channel(r);
-            } else if (op == Mcap.OP_MESSAGE) {
-                int ch = r.u16();
-                r.u32();
-                long t = r.u64();
-                r.u64();
-                ChannelInfo info = channels.get(ch);
+        try {
+            mcap.readChunk(c, m -> {
+                ChannelInfo info = channels.get(m.channel());
                 if (info == null) {
-                    throw new SpyLogFormatException("message on an undefined channel " + ch);
+                    Channel defined = mcap.channels().get(m.channel());
+                    if (defined == null) {
+                        return; // its definition was lost with a damaged part of the file: counted
+                    }
+                    channel(defined);
+                    info = channels.get(m.channel());
                 }
                 if (holds != null && info.hold()) {
-                    holds.add(holdEntry(t, r));
+                    holds.add(holdEntry(info, m));
                 }
-                LogEntry e = entry(info, t, r);
+                LogEntry e = entry(info, m);
                 if (e != null) {
                     out.add(e);
                 }
-            }
-        });
+            });
+        } catch (SpyLogFormatException e) {
+            throw e;
+        } catch (McapFormatException e) {
+            throw new SpyLogFormatException(e.getMessage(), e);
+        }
         return out;
     }
 
-    private static HoldEntry holdEntry(long t, Mcap.In r) throws SpyLogFormatException {
+    private static HoldEntry holdEntry(ChannelInfo c, Message m) throws SpyLogFormatException {
+        try {
+            return c.role() == Role.OLD_HOLD ? oldHoldEntry(m) : protoHoldEntry(m);
+        } catch (SpyLogFormatException e) {
+            throw e;
+        } catch (McapFormatException e) {
+            throw new SpyLogFormatException(e.getMessage(), e);
+        }
+    }
+
+    private static HoldEntry protoHoldEntry(Message m) throws McapFormatException {
+        long[] v = new long[8];
+        byte[][] b = new byte[8][];
+        WireProto.read(m.in(), new WireProto.FieldVisitor() {
+            @Override
+            public void varint(int field, long value) {
+                if (field < v.length) {
+                    v[field] = value;
+                }
+            }
+
+            @Override
+            public void bytes(int field, byte[] array, int offset, int length) {
+                if (field < b.length) {
+                    b[field] = Arrays.copyOfRange(array, offset, offset + length);
+                }
+            }
+        });
+        HoldEntry.Action[] all = HoldEntry.Action.values();
+        if (v[3] < 1 || v[3] > all.length) {
+            throw new SpyLogFormatException("unknown hold action " + v[3]);
+        }
+        String text = b[6] == null ? "" : new String(b[6], StandardCharsets.UTF_8);
+        return new HoldEntry(m.publishTime(), (int) v[1], (int) v[2], all[(int) v[3] - 1], v[4], v[5], b[7], text);
+    }
+
+    private static HoldEntry oldHoldEntry(Message m) throws McapFormatException {
+        RecordInput r = m.in();
         int conn = (int) r.u32();
         int port = (int) r.u32();
         int action = r.u8();
@@ -464,31 +237,74 @@ public final class SpyLogReader implements AutoCloseable {
         }
         long programOffset = r.u64();
         long upstreamOffset = r.u64();
-        String text = new String(r.bytes(r.u16()), java.nio.charset.StandardCharsets.UTF_8);
+        String text = new String(r.bytes(r.u16()), StandardCharsets.UTF_8);
         byte[] bytes = r.bytes(r.remaining());
-        return new HoldEntry(t, conn, port, all[action - 1], programOffset, upstreamOffset, bytes, text);
+        return new HoldEntry(m.publishTime(), conn, port, all[action - 1], programOffset, upstreamOffset, bytes, text);
     }
 
-    private static LogEntry entry(ChannelInfo c, long t, Mcap.In r) throws SpyLogFormatException {
+    /** The entry of a message: times are log times (non-decreasing in the file's order). */
+    private static LogEntry entry(ChannelInfo c, Message m) throws IOException {
+        long t = m.logTime();
         if (c.events()) {
-            return Layout.event(t, r.array(), r.pos(), r.remaining());
+            return Layout.event(t, m.array(), m.offset(), m.length());
         }
-        if (c.dir() == null) {
-            return null; // a channel of another tool
+        if (c.role() == Role.OLD_WIRE) {
+            RecordInput r = m.in();
+            long offset = r.u64();
+            LogEntry.Kind kind = Layout.kind(r.u8());
+            int reasonLen = r.u16();
+            String reason = new String(r.bytes(reasonLen), StandardCharsets.UTF_8);
+            byte[] bytes = r.bytes(r.remaining());
+            return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), offset, kind, bytes, reason, m.publishTime());
         }
-        long offset = r.u64();
-        LogEntry.Kind kind = Layout.kind(r.u8());
-        int reasonLen = r.u16();
-        String reason = new String(r.bytes(reasonLen), java.nio.charset.StandardCharsets.UTF_8);
-        byte[] bytes = r.bytes(r.remaining());
-        return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), offset, kind, bytes, reason);
+        if (c.role() != Role.WIRE) {
+            return null; // a channel of another tool, or holds
+        }
+        long[] v = new long[3];
+        String[] reason = { "" };
+        byte[][] bytes = { new byte[0] };
+        WireProto.read(m.in(), new WireProto.FieldVisitor() {
+            @Override
+            public void varint(int field, long value) {
+                if (field < v.length) {
+                    v[field] = value;
+                }
+            }
+
+            @Override
+            public void bytes(int field, byte[] array, int offset, int length) {
+                if (field == 3) {
+                    reason[0] = new String(array, offset, length, StandardCharsets.UTF_8);
+                } else if (field == 4) {
+                    bytes[0] = Arrays.copyOfRange(array, offset, offset + length);
+                }
+            }
+        });
+        return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), v[1], Layout.kind((int) v[2]), bytes[0], reason[0],
+                m.publishTime());
     }
 
     // --- the contract ----------------------------------------------------------------------------
 
     /** True if the file had no valid footer and summary (cut off, damaged) and was read by scanning it. */
     public boolean recovered() {
-        return recovered;
+        return mcap.recovered();
+    }
+
+    /**
+     * What could not be read, for people: damaged or skipped parts of the file (so far: a damaged
+     * chunk found through the index is listed once an entry from it was asked for), and messages on
+     * channels whose definitions were lost with them.
+     */
+    public List<String> damage() {
+        List<String> out = new ArrayList<>();
+        for (Damage d : mcap.damage()) {
+            out.add(d.describe());
+        }
+        if (undefinedMessages > 0) {
+            out.add(undefinedMessages + " messages on channels whose definitions were lost (skipped)");
+        }
+        return out;
     }
 
     /** The session metadata given to {@link SpyLogWriter#create}. */
@@ -501,11 +317,17 @@ public final class SpyLogReader implements AutoCloseable {
         if (connections == null) {
             Map<Integer, LogEntry.Opened> opened = new TreeMap<>();
             Map<Integer, LogEntry.Closed> closed = new TreeMap<>();
-            for (ChunkRef c : chunks) {
-                if (c.channels() != null && !c.channels().contains(Layout.CHANNEL_EVENTS)) {
+            for (ChunkInfo c : chunks) {
+                if (c.channels() != null && Collections.disjoint(c.channels(), eventChannels())) {
                     continue;
                 }
-                for (LogEntry e : readChunk(c)) {
+                List<LogEntry> entries;
+                try {
+                    entries = readChunk(c);
+                } catch (SpyLogFormatException damaged) {
+                    continue; // listed in damage()
+                }
+                for (LogEntry e : entries) {
                     if (e instanceof LogEntry.Opened o) {
                         opened.putIfAbsent(o.conn(), o);
                     } else if (e instanceof LogEntry.Closed x) {
@@ -515,7 +337,7 @@ public final class SpyLogReader implements AutoCloseable {
             }
             Map<Integer, Integer> ports = new TreeMap<>();
             for (ChannelInfo ci : channels.values()) {
-                if (ci.dir() != null) {
+                if (ci.wire()) {
                     ports.putIfAbsent(ci.conn(), ci.port());
                 }
             }
@@ -546,7 +368,7 @@ public final class SpyLogReader implements AutoCloseable {
     public List<LogConnection> indexedConnections() {
         Map<Integer, LogConnection> byConn = new TreeMap<>();
         for (ChannelInfo c : channels.values()) {
-            if (c.dir() == null) {
+            if (!c.wire()) {
                 continue;
             }
             String client = c.metadata().get(Layout.META_CLIENT);
@@ -573,12 +395,22 @@ public final class SpyLogReader implements AutoCloseable {
 
     /** Log time of the first entry (0 if there is none). */
     public long startTimeNanos() {
-        return startTime;
+        return mcap.startTime();
     }
 
     /** Log time of the last entry (0 if there is none). */
     public long endTimeNanos() {
-        return endTime;
+        return mcap.endTime();
+    }
+
+    private Set<Integer> eventChannels() {
+        Set<Integer> ids = new HashSet<>();
+        for (ChannelInfo c : channels.values()) {
+            if (c.events()) {
+                ids.add(c.id());
+            }
+        }
+        return ids;
     }
 
     /** Wire entries (banners, Player messages, unframed pieces) in the log; events are not counted. */
@@ -596,20 +428,20 @@ public final class SpyLogReader implements AutoCloseable {
         return chunks.size();
     }
 
-    /** Chunks that were complete but damaged (bad CRC, not decompressible) and skipped while recovering. */
+    /** Damaged parts skipped so far (a bad CRC, not decompressible, bytes that are no record); a cut-off end is not counted. */
     public int skippedChunks() {
-        return skippedChunks;
+        return (int) mcap.damage().stream().filter(d -> !d.cutOff()).count();
     }
 
     /** For tests: offset and length of every chunk record, in file order. */
     List<long[]> chunkSpans() {
-        return chunks.stream().sorted(Comparator.comparingLong(ChunkRef::offset))
+        return chunks.stream().sorted(Comparator.comparingLong(ChunkInfo::offset))
                 .map(c -> new long[] { c.offset(), c.length() }).toList();
     }
 
     /** For tests: the entries of the chunk at this file offset, in file order. */
     synchronized List<LogEntry> chunkEntries(long offset) throws IOException {
-        for (ChunkRef c : chunks) {
+        for (ChunkInfo c : chunks) {
             if (c.offset() == offset) {
                 return readChunk(c);
             }
@@ -629,7 +461,7 @@ public final class SpyLogReader implements AutoCloseable {
 
     /** The entries from the first one at or after {@code timeNanos} on; chunks that end earlier are not read. */
     public Iterator<LogEntry> entriesFrom(long timeNanos) {
-        List<ChunkRef> from = chunks.stream().filter(c -> c.end() >= timeNanos).toList();
+        List<ChunkInfo> from = chunks.stream().filter(c -> c.endTime() >= timeNanos).toList();
         return new Merge(from, timeNanos);
     }
 
@@ -642,13 +474,13 @@ public final class SpyLogReader implements AutoCloseable {
     public synchronized byte[] streamBytes(int conn, Direction dir) throws IOException {
         Set<Integer> wanted = new HashSet<>();
         for (ChannelInfo c : channels.values()) {
-            if (c.conn() == conn && c.dir() == dir && !c.events()) {
+            if (c.conn() == conn && c.dir() == dir && c.wire()) {
                 wanted.add(c.id());
             }
         }
         List<LogEntry.Wire> pieces = new ArrayList<>();
         if (!wanted.isEmpty()) {
-            for (ChunkRef c : chunks) {
+            for (ChunkInfo c : chunks) {
                 if (c.channels() != null && Collections.disjoint(c.channels(), wanted)) {
                     continue;
                 }
@@ -689,9 +521,9 @@ public final class SpyLogReader implements AutoCloseable {
         if (holdChannels.isEmpty()) {
             return out;
         }
-        List<ChunkRef> inFileOrder = new ArrayList<>(chunks);
-        inFileOrder.sort(Comparator.comparingLong(ChunkRef::offset));
-        for (ChunkRef c : inFileOrder) {
+        List<ChunkInfo> inFileOrder = new ArrayList<>(chunks);
+        inFileOrder.sort(Comparator.comparingLong(ChunkInfo::offset));
+        for (ChunkInfo c : inFileOrder) {
             if (c.channels() == null || !Collections.disjoint(c.channels(), holdChannels)) {
                 readChunk(c, out);
             }
@@ -749,7 +581,7 @@ public final class SpyLogReader implements AutoCloseable {
 
     @Override
     public void close() throws IOException {
-        file.close();
+        mcap.close();
     }
 
     // --- merging chunks by time ------------------------------------------------------------------
@@ -759,16 +591,16 @@ public final class SpyLogReader implements AutoCloseable {
      * only when the next entry could come from them, so chunks may overlap in time.
      */
     private final class Merge implements Iterator<LogEntry> {
-        private final List<ChunkRef> pending;
+        private final List<ChunkInfo> pending;
         private final long from;
         private int next;
         private final PriorityQueue<Item> queue = new PriorityQueue<>(Comparator
                 .comparingLong((Item i) -> i.entry().timeNanos()).thenComparingInt(Item::chunk)
                 .thenComparingInt(Item::index));
 
-        Merge(List<ChunkRef> chunks, long from) {
-            List<ChunkRef> sorted = new ArrayList<>(chunks);
-            sorted.sort(Comparator.comparingLong(ChunkRef::start).thenComparingInt(ChunkRef::seq));
+        Merge(List<ChunkInfo> chunks, long from) {
+            List<ChunkInfo> sorted = new ArrayList<>(chunks);
+            sorted.sort(Comparator.comparingLong(ChunkInfo::startTime).thenComparingInt(ChunkInfo::seq));
             this.pending = sorted;
             this.from = from;
         }
@@ -777,13 +609,15 @@ public final class SpyLogReader implements AutoCloseable {
         public boolean hasNext() {
             while (true) {
                 while (next < pending.size() && (queue.isEmpty()
-                        || pending.get(next).start() <= queue.peek().entry().timeNanos())) {
-                    ChunkRef c = pending.get(next++);
+                        || pending.get(next).startTime() <= queue.peek().entry().timeNanos())) {
+                    ChunkInfo c = pending.get(next++);
                     List<LogEntry> entries;
                     try {
                         synchronized (SpyLogReader.this) {
                             entries = readChunk(c);
                         }
+                    } catch (SpyLogFormatException damaged) {
+                        continue; // a damaged chunk: skipped, listed in damage()
                     } catch (IOException e) {
                         throw new UncheckedIOException(e);
                     }
@@ -808,18 +642,5 @@ public final class SpyLogReader implements AutoCloseable {
             }
             return queue.poll().entry();
         }
-    }
-
-    // --- file access -----------------------------------------------------------------------------
-
-    private synchronized byte[] readAt(long pos, int len) throws IOException {
-        ByteBuffer b = ByteBuffer.allocate(len);
-        while (b.hasRemaining()) {
-            int n = file.read(b, pos + b.position());
-            if (n < 0) {
-                throw new EOFException(path + ": ends at " + (pos + b.position()) + ", expected " + len + " bytes at " + pos);
-            }
-        }
-        return b.array();
     }
 }

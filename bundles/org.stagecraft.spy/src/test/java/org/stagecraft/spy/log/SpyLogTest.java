@@ -27,11 +27,15 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.stagecraft.mcap.Mcap;
 import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
 
 class SpyLogTest {
+    /** Footer record (opcode, length, 20 bytes) and the closing magic. */
+    private static final int MCAP_TAIL = 9 + 20 + 8;
+
     @TempDir
     Path tmp;
 
@@ -201,7 +205,7 @@ class SpyLogTest {
     }
 
     @Test
-    void entriesFromSeeksPastACorruptEarlyChunk() throws IOException {
+    void aCorruptEarlyChunkIsSkippedAndReportedAndSeekingPastItReadsNothingOfIt() throws IOException {
         Path log = smallChunkLog("pioneer-laser-sonar.sonar.trace.jsonl", 16 * 1024);
         List<LogEntry> everything;
         long[] firstChunk;
@@ -218,38 +222,62 @@ class SpyLogTest {
             List<LogEntry> from = all(r.entriesFrom(t));
             assertEquals(t, from.get(0).timeNanos());
             assertSameEntry(everything.get(everything.size() - 1), from.get(from.size() - 1));
-            UncheckedIOException e = assertThrows(UncheckedIOException.class, () -> all(r.entries()));
-            assertTrue(e.getCause() instanceof SpyLogFormatException, e.toString());
+            assertEquals(List.of(), r.damage(), "seeking past the damaged chunk does not read it");
+            List<LogEntry> read = all(r.entries());
+            assertTrue(read.size() < everything.size(), "the damaged chunk's entries are missing");
+            assertSameEntry(everything.get(everything.size() - 1), read.get(read.size() - 1));
+            assertEquals(1, r.damage().size(), r.damage().toString());
+            String d = r.damage().get(0);
+            assertTrue(d.contains("chunk 0") && d.contains("bytes " + firstChunk[0] + "..")
+                    && d.contains("; " + (everything.size() - read.size()) + " messages lost"), d);
+            assertEquals(1, r.skippedChunks());
         }
     }
 
     @Test
-    void entriesMergeChunksThatOverlapInTime() throws IOException {
+    void logTimesNeverGoBackInFileOrderAndPublishTimesAreTheCaptureTimes() throws IOException {
         Path log = tmp.resolve("overlap.mcap");
         byte[] frame = frameBytes(8);
+        List<Long> captured = new ArrayList<>();
         try (SpyLogWriter w = SpyLogWriter.create(FileChannel.open(log, StandardOpenOption.CREATE,
                 StandardOpenOption.WRITE), Map.of(), 1 << 20)) {
-            // connection 1's messages reach the writer late (times 10..19 after 100..109 were written)
+            // connection 1's messages reach the writer late (captured at 10..19, after 100..109 were written)
             for (int i = 0; i < 10; i++) {
                 w.wire(100 + i, 2, 6666, Direction.CLIENT_TO_SERVER, i * 48L, LogEntry.Kind.FRAME, frame, null);
+                captured.add(100L + i);
             }
             w.flush();
             for (int i = 0; i < 10; i++) {
                 w.wire(10 + i, 1, 6665, Direction.CLIENT_TO_SERVER, i * 48L, LogEntry.Kind.FRAME, frame, null);
+                captured.add(10L + i);
             }
             w.flush();
             w.wire(50, 1, 6665, Direction.SERVER_TO_CLIENT, 0, LogEntry.Kind.BANNER, new byte[32], null);
+            captured.add(50L);
         }
+        List<Long> logTimes = new ArrayList<>();
+        List<Long> publishTimes = new ArrayList<>();
+        try (org.stagecraft.mcap.McapReader m = org.stagecraft.mcap.McapReader.open(log)) {
+            for (org.stagecraft.mcap.ChunkInfo c : m.chunks()) {
+                m.readChunk(c, msg -> {
+                    logTimes.add(msg.logTime());
+                    publishTimes.add(msg.publishTime());
+                });
+            }
+        }
+        assertEquals(captured, publishTimes, "the capture times, exactly");
+        for (int i = 1; i < logTimes.size(); i++) {
+            assertTrue(logTimes.get(i) >= logTimes.get(i - 1), "log time " + i + " goes back: " + logTimes);
+            assertTrue(logTimes.get(i) >= publishTimes.get(i), "logged before it was captured: " + i);
+        }
+        assertEquals(109L, logTimes.get(10), "a late entry is logged at the previous entry's log time");
         try (SpyLogReader r = SpyLogReader.open(log)) {
             List<LogEntry> entries = all(r.entries());
             assertEquals(21, entries.size());
             assertTimeOrder(entries);
-            assertEquals(10, entries.get(0).timeNanos());
-            assertEquals(50, entries.get(10).timeNanos());
-            List<LogEntry> from = all(r.entriesFrom(15));
-            assertEquals(16, from.size());
-            assertEquals(15, from.get(0).timeNanos());
+            assertEquals(100, entries.get(0).timeNanos());
             assertEquals(10 * 48, r.streamBytes(1, Direction.CLIENT_TO_SERVER).length);
+            assertEquals(10 * 48, r.streamBytes(2, Direction.CLIENT_TO_SERVER).length);
         }
     }
 
@@ -346,7 +374,7 @@ class SpyLogTest {
                 log, Map.of("host", "robot-1"));
         byte[] file = Files.readAllBytes(log);
         Path cut = tmp.resolve("nofooter.mcap");
-        Files.write(cut, Arrays.copyOf(file, file.length - Mcap.TAIL));
+        Files.write(cut, Arrays.copyOf(file, file.length - MCAP_TAIL));
         try (SpyLogReader full = SpyLogReader.open(log); SpyLogReader r = SpyLogReader.open(cut)) {
             assertFalse(full.recovered());
             assertTrue(r.recovered());
@@ -363,7 +391,7 @@ class SpyLogTest {
         }
         // a damaged summary is not trusted either
         byte[] bad = file.clone();
-        bad[bad.length - Mcap.TAIL - 20] ^= 0x55; // inside the summary offsets, covered by the summary CRC
+        bad[bad.length - MCAP_TAIL - 20] ^= 0x55; // inside the summary offsets, covered by the summary CRC
         Files.write(cut, bad);
         try (SpyLogReader r = SpyLogReader.open(cut)) {
             assertTrue(r.recovered());

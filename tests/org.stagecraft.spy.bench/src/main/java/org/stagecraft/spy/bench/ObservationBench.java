@@ -7,7 +7,7 @@ import java.util.Map;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.wire.Direction;
-import org.stagecraft.recording.peer.RecordedConnection;
+import org.stagecraft.recording.peers.RecordedConnection;
 import org.stagecraft.spy.log.SpyLogWriter;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 import org.stagecraft.spy.proxy.LogRecorder;

@@ -12,8 +12,8 @@ import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 
-import org.stagecraft.recording.peer.RecordedConnection;
-import org.stagecraft.recording.peer.ReplayPeer;
+import org.stagecraft.recording.peers.RecordedConnection;
+import org.stagecraft.recording.peers.ReplayPeer;
 
 /**
  * The Player side of the benchmark: one port per recorded session, serving that session's server

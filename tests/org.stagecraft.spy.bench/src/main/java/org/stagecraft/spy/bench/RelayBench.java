@@ -16,7 +16,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 
-import org.stagecraft.recording.peer.ReplayPeer;
+import org.stagecraft.recording.peers.ReplayPeer;
 
 /**
  * The relay benchmark: the same load of recorded Player sessions (many concurrent connections, each

@@ -8,7 +8,7 @@ import java.util.List;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.PlayerFramer;
 import org.stagecraft.player.wire.WireEvent;
-import org.stagecraft.recording.peer.RecordedConnection;
+import org.stagecraft.recording.peers.RecordedConnection;
 import org.stagecraft.recording.trace.TraceCorpus;
 
 /**

@@ -6,9 +6,11 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.stagecraft.replay.log.SessionLog;
+import org.stagecraft.replay.log.SessionLogs;
+import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.scene.Camera;
 import org.stagecraft.scene.LayerSpec;
-import org.stagecraft.scene.TraceMessages;
 import org.stagecraft.scene.WorldModel;
 import org.stagecraft.streams.StreamKey;
 import org.stagecraft.streams.StreamMessage;
@@ -33,8 +35,15 @@ final class RecordedScene {
         return Path.of(dir, name);
     }
 
+    /** What a replay of the recorded session publishes: the spy's messages under the spy's keys. */
+    static List<StreamMessage> recorded(String name) throws IOException {
+        try (SessionLog log = SessionLogs.open(trace(name))) {
+            return Replayer.allPublished(log);
+        }
+    }
+
     RecordedScene(int n) throws IOException {
-        List<StreamMessage> msgs = TraceMessages.read(trace("pioneer-laser-sonar.gt.trace.jsonl"), PLAYER);
+        List<StreamMessage> msgs = recorded("pioneer-laser-sonar.gt.trace.jsonl");
         int scans = 0;
         for (StreamMessage m : msgs) {
             world.accept(m);

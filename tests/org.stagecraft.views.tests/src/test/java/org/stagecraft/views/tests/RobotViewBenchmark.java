@@ -17,7 +17,6 @@ import org.stagecraft.player.msg.Position2d;
 import org.stagecraft.scene.DefaultLayers;
 import org.stagecraft.scene.LayerSpec;
 import org.stagecraft.scene.Payloads;
-import org.stagecraft.scene.TraceMessages;
 import org.stagecraft.streams.StreamKey;
 import org.stagecraft.streams.StreamMessage;
 import org.stagecraft.streams.StreamPattern;
@@ -43,8 +42,7 @@ class RobotViewBenchmark {
     @Test
     void frameTimes() throws Exception {
         double seconds = Double.parseDouble(System.getenv().getOrDefault("STAGECRAFT_BENCH_SECONDS", "5"));
-        List<StreamMessage> recorded = TraceMessages.read(RecordedScene.trace("pioneer-laser-sonar.gt.trace.jsonl"),
-                RecordedScene.PLAYER);
+        List<StreamMessage> recorded = RecordedScene.recorded("pioneer-laser-sonar.gt.trace.jsonl");
         StringBuilder report = new StringBuilder();
         report.append(String.format("Robot View benchmark: %d x %d, %s, %d CPUs, %.0f s per case%n", W, H,
                 System.getProperty("java.vm.name") + " " + Runtime.version(), Runtime.getRuntime().availableProcessors(),
@@ -86,7 +84,7 @@ class RobotViewBenchmark {
             StreamKey k = m.key();
             if (k.messageType() == 4 && k.subtype() == 1) {
                 for (int i = 0; i < robots; i++) {
-                    rec.world.accept(TraceMessages.moved(m, RecordedScene.PLAYER, address(i)));
+                    rec.world.accept(moved(m, RecordedScene.PLAYER, address(i)));
                 }
             }
             if (k.messageType() != 1) {
@@ -141,6 +139,14 @@ class RobotViewBenchmark {
                 ui / 1e6 / n, vertices, os.getSystemLoadAverage());
     }
 
+    /** The same message as if it came from another robot (another Player address). */
+    private static StreamMessage moved(StreamMessage m, String fromAddress, String toAddress) {
+        StreamKey k = m.key();
+        return new StreamMessage(new StreamKey(k.source().equals(fromAddress) ? toAddress : k.source(),
+                k.destination().equals(fromAddress) ? toAddress : k.destination(), k.messageType(), k.deviceType(),
+                k.index(), k.subtype()), m.timeNanos(), m.payload());
+    }
+
     private static String address(int i) {
         return "127.0.0.1:" + (6665 + i);
     }
@@ -150,7 +156,7 @@ class RobotViewBenchmark {
         for (int i = 0; i < robots; i++) {
             double ox = (i % cols) * spacing, oy = (i / cols) * spacing;
             for (StreamMessage m : round) {
-                StreamMessage moved = TraceMessages.moved(m, RecordedScene.PLAYER, address(i));
+                StreamMessage moved = moved(m, RecordedScene.PLAYER, address(i));
                 if (moved.key().deviceType() == 4 && Payloads.body(moved) instanceof Position2d.State s) {
                     moved = new StreamMessage(moved.key(), moved.timeNanos(), new Position2d.State(
                             new Geometry.Pose2d(s.pos().px() + ox, s.pos().py() + oy, s.pos().pa()), s.vel(), s.stall()));

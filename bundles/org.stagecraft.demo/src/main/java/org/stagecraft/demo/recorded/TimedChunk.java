@@ -1,7 +1,0 @@
-package org.stagecraft.demo.recorded;
-
-/**
- * The bytes one recv() returned in the recording, and when: seconds after the connection was opened.
- */
-public record TimedChunk(double offset, byte[] data) {
-}
