@@ -42,8 +42,8 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.stagecraft.foxglove.FoxgloveChannel;
 import org.stagecraft.foxglove.FoxgloveSink;
-import org.stagecraft.recording.peer.RecordedConnection;
-import org.stagecraft.recording.peer.ReplayPeer;
+import org.stagecraft.recording.peers.RecordedConnection;
+import org.stagecraft.recording.peers.ReplayPeer;
 import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.streams.StreamMessage;
 
