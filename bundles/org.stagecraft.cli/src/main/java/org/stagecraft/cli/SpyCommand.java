@@ -29,6 +29,7 @@ import org.stagecraft.spy.proxy.LogRecorder;
 import org.stagecraft.spy.proxy.NetworkSpy;
 import org.stagecraft.spy.proxy.ObservationPipeline;
 import org.stagecraft.spy.proxy.Route;
+import org.stagecraft.spy.proxy.SpyListener;
 import org.stagecraft.spy.proxy.WireObserver;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamMessage;
@@ -116,8 +117,9 @@ final class SpyCommand {
      */
     int serve(Options o, PrintStream err, CountDownLatch stop, boolean tty) {
         NetworkSpy spy = new NetworkSpy(o.routes(), WireObserver.NONE).upstreamGrace(o.upstreamGrace());
-        // Player refusing is said at once, on its own line (after the live line on a terminal).
-        spy.addListener(n -> err.print((tty ? "\n" : "") + "stagecraft spy: " + n.text() + (tty ? "" : "\n")));
+        // Player refusing, or observation failing, is said at once, on its own line (after the live line on a terminal).
+        SpyListener say = n -> err.print((tty ? "\n" : "") + "stagecraft spy: " + n.text() + (tty ? "" : "\n"));
+        spy.addListener(say);
         // Bind first: a port in use must not leave an empty log behind (or truncate an old one).
         try {
             spy.bind();
@@ -161,6 +163,7 @@ final class SpyCommand {
         // with a live view, the recorder hook also tells it when a connection has ended
         ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()),
                 live != null ? new EndOfConnections(recorder, bus) : recorder, OBSERVER_QUEUE_BYTES);
+        pipeline.addListener(say);
         spy.observer(pipeline);
         try {
             spy.start();
@@ -319,10 +322,10 @@ final class SpyCommand {
             long messages = pipeline.messages();
             long bytes = spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT);
             String line = String.format(Locale.ROOT,
-                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s%s",
+                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s%s%s",
                     spy.openConnections(), spy.totalConnections(), (messages - lastMessages) / secs,
                     (bytes - lastBytes) / secs / 1000, pipeline.decodeProblems(), pipeline.unframedBytes(),
-                    pipeline.droppedBytes(), live != null ? " | " + live.summary(false) : "",
+                    pipeline.droppedBytes(), failures(" | "), live != null ? " | " + live.summary(false) : "",
                     pipeline.recorderError() != null ? " | " + pipeline.recorderError() : "");
             lastMessages = messages;
             lastBytes = bytes;
@@ -333,12 +336,31 @@ final class SpyCommand {
         String totals() {
             return String.format(Locale.ROOT,
                     "%d connections, %d messages, %d bytes forwarded, %d undecodable messages, %d unframed bytes,"
-                            + " %d bytes unobserved%s%s",
+                            + " %d bytes unobserved%s%s%s",
                     spy.totalConnections(), pipeline.messages(),
                     spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT),
-                    pipeline.decodeProblems(), pipeline.unframedBytes(), pipeline.droppedBytes(),
+                    pipeline.decodeProblems(), pipeline.unframedBytes(), pipeline.droppedBytes(), failures("; "),
                     live != null ? "; " + live.summary(true) : "",
                     pipeline.recorderError() != null ? "; " + pipeline.recorderError() : "");
+        }
+
+        /**
+         * What went wrong on the observation side, if anything: messages given up to bound memory,
+         * failures of observation (the first one named), failures of the relay's observer calls.
+         */
+        private String failures(String sep) {
+            StringBuilder b = new StringBuilder();
+            if (pipeline.abandonedMessages() > 0) {
+                b.append(sep).append(pipeline.abandonedMessages()).append(" unfinished messages given up (memory bound)");
+            }
+            long failed = pipeline.internalErrors() + spy.observerFailures();
+            if (failed > 0) {
+                b.append(sep).append(failed).append(" observation failures");
+                if (pipeline.failure() != null) {
+                    b.append(", the first: ").append(pipeline.failure());
+                }
+            }
+            return b.toString();
         }
     }
 }

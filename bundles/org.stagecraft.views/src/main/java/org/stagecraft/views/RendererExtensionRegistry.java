@@ -1,12 +1,17 @@
 package org.stagecraft.views;
 
+import static org.stagecraft.core.extensions.ExtensionXml.ATT_CLASS;
+import static org.stagecraft.core.extensions.ExtensionXml.ATT_DEFAULT_ALPHA;
+import static org.stagecraft.core.extensions.ExtensionXml.ATT_DEFAULT_COLOUR;
+import static org.stagecraft.core.extensions.ExtensionXml.ATT_DEFAULT_PATTERN;
+import static org.stagecraft.core.extensions.ExtensionXml.ATT_NAME;
+import static org.stagecraft.core.extensions.ExtensionXml.EL_RENDERER;
+
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
-import java.util.Set;
 import java.util.function.Consumer;
 
 import org.eclipse.core.runtime.CoreException;
@@ -16,6 +21,8 @@ import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
+import org.stagecraft.core.extensions.ExtensionReader;
+import org.stagecraft.core.extensions.ExtensionXml;
 import org.stagecraft.scene.LayerSpec;
 import org.stagecraft.streams.StreamPattern;
 
@@ -26,7 +33,7 @@ import org.stagecraft.streams.StreamPattern;
  * be created is reported when a layer asks for it.
  */
 public final class RendererExtensionRegistry {
-    public static final String EXTENSION_POINT = "org.stagecraft.views.renderers";
+    public static final String EXTENSION_POINT = ExtensionXml.RENDERERS;
     private static final String BUNDLE = "org.stagecraft.views";
 
     /** One contribution; {@link #create()} makes a renderer instance for one layer. */
@@ -38,13 +45,12 @@ public final class RendererExtensionRegistry {
 
         /** @throws CoreException if the class cannot be created or is no StreamRenderer */
         public StreamRenderer create() throws CoreException {
-            Object o = element.createExecutableExtension("class");
-            if (o instanceof StreamRenderer r) {
-                return r;
+            try {
+                return ExtensionReader.create(element, ATT_CLASS, StreamRenderer.class);
+            } catch (IllegalArgumentException e) {
+                throw new CoreException(Status.error("plug-in " + contributor + ", extension " + EXTENSION_POINT
+                        + ", renderer '" + id + "': " + e.getMessage(), e));
             }
-            throw new CoreException(Status.error("plug-in " + contributor + ", extension " + EXTENSION_POINT
-                    + ", renderer '" + id + "': class " + element.getAttribute("class") + " does not extend "
-                    + StreamRenderer.class.getName()));
         }
 
         /** A layer of this renderer with its defaults. */
@@ -59,37 +65,18 @@ public final class RendererExtensionRegistry {
     /** Every valid contribution by id, in registry order. */
     public static Map<String, Contribution> load(IExtensionRegistry extensions, Consumer<IStatus> problems) {
         Map<String, Contribution> loaded = new LinkedHashMap<>();
-        Set<String> ids = new HashSet<>();
-        for (IConfigurationElement e : extensions.getConfigurationElementsFor(EXTENSION_POINT)) {
-            String where = "plug-in " + e.getContributor().getName() + ", extension " + EXTENSION_POINT + ", element <"
-                    + e.getName() + ">";
-            try {
-                if (!"renderer".equals(e.getName())) {
-                    throw new IllegalArgumentException("unknown element");
-                }
-                String id = trimmed(e.getAttribute("id"));
-                if (id == null) {
-                    throw new IllegalArgumentException("renderer has no id");
-                }
-                where += " id '" + id + "'";
-                if (!ids.add(id)) {
-                    throw new IllegalArgumentException("another renderer already has id '" + id + "'");
-                }
-                if (trimmed(e.getAttribute("class")) == null) {
-                    throw new IllegalArgumentException("renderer has no class");
-                }
-                String name = trimmed(e.getAttribute("name"));
-                String pattern = trimmed(e.getAttribute("defaultPattern"));
-                String colour = trimmed(e.getAttribute("defaultColour"));
-                String alpha = trimmed(e.getAttribute("defaultAlpha"));
-                int rgb = colour == null ? 0x808080 : parseColour(colour);
-                loaded.put(id, new Contribution(id, name == null ? id : name, e.getContributor().getName(),
-                        pattern == null ? StreamPattern.any() : StreamPattern.parse(pattern), rgb,
-                        alpha == null ? 1 : Double.parseDouble(alpha), e));
-            } catch (IllegalArgumentException ex) {
-                problems.accept(Status.error(where + ": " + ex.getMessage(), ex));
-            }
-        }
+        new ExtensionReader(EXTENSION_POINT, problems).read(extensions, e -> {
+            e.expect(EL_RENDERER);
+            String id = e.id(EL_RENDERER);
+            e.required(ATT_CLASS);
+            String pattern = e.attribute(ATT_DEFAULT_PATTERN);
+            String colour = e.attribute(ATT_DEFAULT_COLOUR);
+            String alpha = e.attribute(ATT_DEFAULT_ALPHA);
+            int rgb = colour == null ? 0x808080 : parseColour(colour);
+            loaded.put(id, new Contribution(id, e.attribute(ATT_NAME, id), e.contributor(),
+                    pattern == null ? StreamPattern.any() : StreamPattern.parse(pattern), rgb,
+                    alpha == null ? 1 : Double.parseDouble(alpha), e.raw()));
+        });
         return loaded;
     }
 
@@ -125,9 +112,5 @@ public final class RendererExtensionRegistry {
             throw new IllegalArgumentException("defaultColour '" + s + "' is not #RRGGBB");
         }
         return Integer.parseInt(s.substring(1), 16);
-    }
-
-    private static String trimmed(String s) {
-        return s == null || s.isBlank() ? null : s.trim();
     }
 }

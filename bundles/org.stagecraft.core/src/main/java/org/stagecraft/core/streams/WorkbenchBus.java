@@ -1,17 +1,22 @@
 package org.stagecraft.core.streams;
 
+import org.stagecraft.core.extensions.Contributions;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamPattern;
+import org.stagecraft.streams.StreamProcessors;
 import org.stagecraft.streams.Subscription;
 
 /**
  * The stream bus of the running workbench: whatever observes a robot (the Network Spy of a Robot Session,
- * a log replay) publishes here, and the views subscribe here. One per workbench, created on first use;
- * consumers run on virtual threads, so a view hops to its UI thread itself.
+ * a log replay) publishes here, and the views subscribe here. One per workbench, created on first use with
+ * every contributed stream processor running on it ({@link Contributions#startProcessors}), so a derived
+ * stream appears for a live robot as it does in a replay; consumers run on virtual threads, so a view hops
+ * to its UI thread itself.
  */
 public final class WorkbenchBus {
     private static StreamBus bus;
+    private static StreamProcessors processors;
 
     private WorkbenchBus() {
     }
@@ -22,17 +27,28 @@ public final class WorkbenchBus {
     /**
      * Republishes everything {@code source} carries (e.g. a Robot Session's own bus, fed by its spy) on the
      * workbench bus, in order and lossless up to {@value #FORWARD_CAPACITY} waiting messages, so that the
-     * views see it. Close the result to stop.
+     * views and the processors see it. Close the result to stop.
      */
     public static Subscription forward(StreamBus source) {
         StreamBus target = get();
         return source.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(FORWARD_CAPACITY), target::publish);
     }
 
+    /** The bus, with the contributed processors started on it; a new one (and new processors) if the last was closed. */
     public static synchronized StreamBus get() {
         if (bus == null || bus.isClosed()) {
+            if (processors != null) {
+                processors.stopAll(); // their bus is gone; stop() frees what else they hold
+            }
             bus = new StreamBus();
+            processors = Contributions.workbench().startProcessors(bus);
         }
         return bus;
+    }
+
+    /** The ids of the processors running on the workbench bus. */
+    public static synchronized java.util.Set<String> processorIds() {
+        get();
+        return processors.ids();
     }
 }

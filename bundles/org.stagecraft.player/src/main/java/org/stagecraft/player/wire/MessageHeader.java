@@ -65,6 +65,29 @@ public record MessageHeader(int host, int robot, int interf, int index, int type
     }
 
     /**
+     * Whether the {@link #SIZE} bytes at {@code b[off]} can be a Player message header: the same
+     * checks as {@link #problem()} (type 1..6, interface and index within 16 bits, subtype within 8,
+     * payload size 0..{@link #MAX_PAYLOAD}), read in place without creating anything, so that a
+     * framer can scan garbage for the next header at memory speed.
+     */
+    public static boolean plausibleAt(byte[] b, int off) {
+        int type = word(b, off + 16);
+        if (type < 1 || type > 6) {
+            return false;
+        }
+        if ((word(b, off + 8) & 0xFFFF0000) != 0 || (word(b, off + 12) & 0xFFFF0000) != 0
+                || (word(b, off + 20) & 0xFFFFFF00) != 0) {
+            return false;
+        }
+        int size = word(b, off + 36);
+        return size >= 0 && size <= MAX_PAYLOAD;
+    }
+
+    private static int word(byte[] b, int off) {
+        return (b[off] & 0xFF) << 24 | (b[off + 1] & 0xFF) << 16 | (b[off + 2] & 0xFF) << 8 | (b[off + 3] & 0xFF);
+    }
+
+    /**
      * Why this header cannot be a Player message header, or null if it can. Host, robot, timestamp
      * and seq are never checked: real servers leave them uninitialised on some messages.
      */

@@ -192,4 +192,107 @@ class PlayerFramerTest {
         assertArrayEquals(raw, w.toByteArray(), "garbage SYNCH timestamp and seq survive");
         assertEquals(null, h.problem());
     }
+
+    /** Bytes allocated by this thread so far (HotSpot's per-thread counter). */
+    private static long allocated() {
+        return ((com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean())
+                .getCurrentThreadAllocatedBytes();
+    }
+
+    @Test
+    void plausibleAtAgreesWithTheHeadersOwnCheck() {
+        Random random = new Random(11);
+        byte[] b = new byte[MessageHeader.SIZE];
+        int plausible = 0;
+        for (int i = 0; i < 200_000; i++) {
+            random.nextBytes(b);
+            // bias towards near-valid headers so both answers are exercised
+            if (random.nextBoolean()) {
+                b[8] = b[9] = b[12] = b[13] = b[20] = b[21] = b[22] = b[16] = b[17] = b[18] = 0;
+                b[19] = (byte) random.nextInt(8);
+                b[36] = (byte) (random.nextInt(4) == 0 ? random.nextInt(256) : 0);
+            }
+            boolean p = MessageHeader.plausibleAt(b, 0);
+            assertEquals(MessageHeader.read(b, 0).problem() == null, p, java.util.HexFormat.of().formatHex(b));
+            plausible += p ? 1 : 0;
+        }
+        assertTrue(plausible > 1000, "both answers were checked: " + plausible);
+    }
+
+    @Test
+    void garbageIsScannedWithoutAnAllocationPerSkippedByte() {
+        byte[] garbage = new byte[4 << 20];
+        new Random(3).nextBytes(garbage);
+        for (int i = 16; i < garbage.length; i += 40) {
+            garbage[i] = 0x7F; // no word at these positions is a message type: no plausible header anywhere
+        }
+        long[] skipped = new long[1];
+        PlayerFramer f = new PlayerFramer(Direction.CLIENT_TO_SERVER, e -> skipped[0] += ((WireEvent.Unframed) e).length());
+        f.accept(new byte[1]); // warm up
+        long before = allocated();
+        for (int off = 0; off < garbage.length; off += 65536) {
+            f.accept(garbage, off, Math.min(65536, garbage.length - off));
+        }
+        long perByte = (allocated() - before) / garbage.length;
+        f.end();
+        assertEquals(garbage.length + 1, skipped[0], "every garbage byte reported as unframed");
+        // The reported pieces themselves cost a few copies of the bytes; a header object per skipped
+        // byte (the old slide) costs well over a hundred bytes per byte.
+        assertTrue(perByte < 10, perByte + " bytes allocated per skipped byte");
+    }
+
+    @Test
+    void garbageEndingInAHeaderFindsItAcrossChunkBoundaries() {
+        byte[] garbage = new byte[100_003];
+        java.util.Arrays.fill(garbage, (byte) 0xEE);
+        byte[] stream = concat(garbage, ACK, STATE, garbage, BIG);
+        List<String> whole = Streams.summary(Streams.frameWhole(Direction.CLIENT_TO_SERVER, stream));
+        Random random = new Random(5);
+        for (int i = 0; i < 20; i++) {
+            List<WireEvent> events = Streams.frameRandomly(Direction.CLIENT_TO_SERVER, stream, random);
+            assertEquals(whole, Streams.summary(events));
+            assertEquals(3, events.stream().filter(e -> e instanceof WireEvent.Frame).count());
+            assertArrayEquals(stream, covered(events));
+        }
+    }
+
+    @Test
+    void aPayloadArrivingInPiecesIsHeldAtTheSizeReceived() {
+        byte[] hdr = message(header(6, 0, 1, 1, 1.0), new RawBody(new byte[MessageHeader.MAX_PAYLOAD]));
+        PlayerFramer f = new PlayerFramer(Direction.CLIENT_TO_SERVER, e -> { });
+        f.accept(hdr, 0, MessageHeader.SIZE);
+        long before = allocated();
+        int half = MessageHeader.MAX_PAYLOAD / 2;
+        for (int off = MessageHeader.SIZE; off < MessageHeader.SIZE + half; off += 65536) {
+            f.accept(hdr, off, 65536);
+        }
+        long used = allocated() - before;
+        assertEquals(MessageHeader.SIZE + half, f.heldBytes());
+        // a buffer that doubles holds up to twice what was sent and copies it on every doubling
+        assertTrue(used < half * 1.1, used + " bytes allocated to hold " + half);
+    }
+
+    @Test
+    void anAbandonedMessageIsPassedOverAndFramingContinuesAfterIt() {
+        byte[] stream = concat(BANNER, ACK, BIG, STATE, ACK);
+        List<WireEvent> events = new java.util.ArrayList<>();
+        PlayerFramer f = new PlayerFramer(Direction.SERVER_TO_CLIENT, events::add);
+        int cut = 32 + 40 + 40 + 1000; // 1000 bytes into BIG's payload
+        f.accept(stream, 0, cut);
+        assertEquals(MessageHeader.SIZE + 1000, f.heldBytes());
+        assertEquals(72, f.pendingMessageOffset());
+        assertEquals(1000, f.abandon());
+        assertEquals(0, f.heldBytes());
+        assertEquals(cut, f.nextOffset());
+        for (int off = cut; off < stream.length; off += 7) {
+            f.accept(stream, off, Math.min(7, stream.length - off));
+        }
+        f.end();
+        assertEquals(BIG.length, f.abandonedBytes(), "the whole abandoned message is counted");
+        assertEquals(4, events.size(), "banner, ACK, STATE, ACK: " + events);
+        WireEvent.Frame next = assertInstanceOf(WireEvent.Frame.class, events.get(2));
+        assertEquals(32 + 40 + BIG.length, next.offset());
+        assertEquals(4, next.header().interf());
+        assertEquals(0, f.unframedBytes(), "passed over, not reported as garbage");
+    }
 }

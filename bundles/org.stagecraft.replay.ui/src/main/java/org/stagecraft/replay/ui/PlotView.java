@@ -30,7 +30,7 @@ import org.stagecraft.replay.analysis.SeriesText;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.replay.ui.internal.PlotCanvas;
-import org.stagecraft.replay.ui.internal.SharedLog;
+import org.stagecraft.replay.session.SharedLog;
 
 /**
  * Plots numeric fields of a Session Log over time: several series, each a stream and a field path
@@ -154,7 +154,7 @@ public class PlotView extends ViewPart {
     }
 
     private org.stagecraft.player.codec.CodecRegistry editorColumnsRegistry() {
-        return editor != null ? editor.columns().registry() : org.stagecraft.core.codec.DecoderExtensionRegistry.get();
+        return editor != null ? editor.columns().registry() : org.stagecraft.core.extensions.Contributions.workbench().codecs();
     }
 
     /** Adds a series by its text ({@link SeriesText}). @throws IllegalArgumentException when it does not parse */

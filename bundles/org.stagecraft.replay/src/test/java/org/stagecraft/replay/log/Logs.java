@@ -43,6 +43,19 @@ public final class Logs {
         return out;
     }
 
+    /** The trace written into {@code out} as a spy log (chunks of {@code chunkSize} bytes), as the spy would. */
+    public static Path spyLog(Path trace, Path out, int chunkSize) throws IOException {
+        try (var ch = java.nio.file.Files.newByteChannel(out, java.nio.file.StandardOpenOption.CREATE_NEW,
+                java.nio.file.StandardOpenOption.WRITE);
+                org.stagecraft.spy.log.SpyLogWriter w = org.stagecraft.spy.log.SpyLogWriter.create(ch, java.util.Map.of(), chunkSize)) {
+            List<LogProblem> problems = TraceImport.convert(trace, w);
+            if (!problems.isEmpty()) {
+                throw new IOException("the trace did not go in whole: " + problems);
+            }
+        }
+        return out;
+    }
+
     public static long nanos(double t) {
         return Math.round(t * 1e9);
     }

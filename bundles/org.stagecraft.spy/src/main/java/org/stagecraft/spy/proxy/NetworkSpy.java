@@ -9,7 +9,6 @@ import java.net.Socket;
 import java.net.SocketException;
 import java.time.Duration;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
@@ -72,6 +71,7 @@ public final class NetworkSpy implements AutoCloseable {
     private final LongAdder bytesS2C = new LongAdder();
     private final LongAdder connectionsTotal = new LongAdder();
     private final LongAdder observerFailures = new LongAdder();
+    private final java.util.concurrent.atomic.AtomicLong lastFailureReport = new java.util.concurrent.atomic.AtomicLong(Long.MIN_VALUE);
     private volatile boolean closed;
     private final RobotHold holds;
 
@@ -365,7 +365,7 @@ public final class NetworkSpy implements AutoCloseable {
                         out.write(buf, 0, n);
                     }
                     counter.add(n);
-                    observe(() -> observer.chunk(info, dir, Arrays.copyOf(buf, n), WallClock.nowNanos()));
+                    observeChunk(info, dir, buf, n);
                 }
             } catch (IOException e) {
                 abort((dir == Direction.CLIENT_TO_SERVER ? "client" : "upstream") + " side failed: " + e.getMessage());
@@ -393,12 +393,45 @@ public final class NetworkSpy implements AutoCloseable {
         }
     }
 
-    /** An observer bug must never stop the bytes: it is counted and the relay goes on. */
+    /** Hands a forwarded chunk to the observer, in the relay's buffer (see WireObserver's contract). */
+    private void observeChunk(ConnectionInfo info, Direction dir, byte[] buf, int n) {
+        try {
+            observer.chunk(info, dir, buf, 0, n, WallClock.nowNanos());
+        } catch (Throwable e) {
+            observerFailed(info, e);
+        }
+    }
+
+    /**
+     * An observer's failure (a bug, a missing class, memory) must never stop the bytes: it is
+     * counted, reported to the listeners at once, and the relay goes on.
+     */
     private void observe(Runnable call) {
         try {
             call.run();
-        } catch (RuntimeException e) {
-            observerFailures.increment();
+        } catch (Throwable e) {
+            observerFailed(null, e);
+        }
+    }
+
+    private void observerFailed(ConnectionInfo info, Throwable e) {
+        observerFailures.increment();
+        long now = System.nanoTime();
+        long last = lastFailureReport.get();
+        if (last != Long.MIN_VALUE && now - last < 1_000_000_000L || !lastFailureReport.compareAndSet(last, now)) {
+            return; // reported at most once a second; the count goes on
+        }
+        String m = e.getMessage();
+        SpyNotice n = new SpyNotice(info == null ? new ConnectionInfo(0, 0, "", "", "") : info,
+                SpyNotice.Kind.OBSERVATION_FAILED, "the spy's observer failed" + (info == null ? "" : " on connection "
+                        + info.id()) + " (" + e.getClass().getName() + (m == null ? "" : ": " + m) + "); forwarding goes on ["
+                        + observerFailures.sum() + " observer failures so far]");
+        for (SpyListener l : listeners) {
+            try {
+                l.notice(n);
+            } catch (Throwable ignored) {
+                // a listener's failure must not reach the wire either
+            }
         }
     }
 

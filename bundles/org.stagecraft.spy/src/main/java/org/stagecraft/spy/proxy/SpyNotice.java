@@ -2,7 +2,7 @@ package org.stagecraft.spy.proxy;
 
 /**
  * Something about a connection that the user should see at once, not only in the log: Player (the
- * upstream) not answering. The command line prints it on stderr; the IDE shows it in the spy's
+ * upstream) not answering, or observation failing. The command line prints it on stderr; the IDE shows it in the spy's
  * console, the Tools view and the Error Log.
  *
  * @param connection the robot program's connection concerned
@@ -16,11 +16,16 @@ public record SpyNotice(ConnectionInfo connection, Kind kind, String text) {
         /** The upstream accepted after refusing at first; the connection is relayed normally. */
         UPSTREAM_REACHED,
         /** The upstream still refused when the grace period ended; the robot program's connection was closed. */
-        UPSTREAM_REFUSED;
+        UPSTREAM_REFUSED,
+        /**
+         * Observing failed (a bug, a missing class, a log that broke): the wire goes on, but what the
+         * spy shows and records is incomplete from here; the bytes concerned are counted as unobserved.
+         */
+        OBSERVATION_FAILED;
 
-        /** Whether the robot program lost its connection (an error), not just waited. */
+        /** Whether something was lost (a robot program's connection, or observation), not just delayed. */
         public boolean isFailure() {
-            return this == UPSTREAM_REFUSED;
+            return this == UPSTREAM_REFUSED || this == OBSERVATION_FAILED;
         }
     }
 

@@ -14,6 +14,15 @@ public interface WireObserver {
     /** A chunk exactly as one read returned it; the array belongs to the observer. */
     void chunk(ConnectionInfo connection, Direction dir, byte[] data, long timeNanos);
 
+    /**
+     * A chunk as one read returned it, in the relay's buffer: the observer must not keep the array
+     * (it is reused by the next read). By default a copy is handed to {@link #chunk(ConnectionInfo,
+     * Direction, byte[], long)}; an observer that takes what it needs at once saves that copy.
+     */
+    default void chunk(ConnectionInfo connection, Direction dir, byte[] buffer, int offset, int length, long timeNanos) {
+        chunk(connection, dir, java.util.Arrays.copyOfRange(buffer, offset, offset + length), timeNanos);
+    }
+
     /** Both directions have ended (closed, reset, or the upstream refused). */
     void closed(ConnectionInfo connection, long timeNanos, String reason);
 
@@ -39,6 +48,10 @@ public interface WireObserver {
 
         @Override
         public void chunk(ConnectionInfo connection, Direction dir, byte[] data, long timeNanos) {
+        }
+
+        @Override
+        public void chunk(ConnectionInfo connection, Direction dir, byte[] buffer, int offset, int length, long timeNanos) {
         }
 
         @Override

@@ -8,6 +8,7 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 
 import org.stagecraft.player.codec.CodecRegistry;
@@ -48,6 +49,7 @@ public final class RobotSession implements AutoCloseable {
     private static final long OBSERVER_QUEUE_BYTES = 64L << 20;
 
     private final SessionConfig config;
+    private final CodecRegistry codecs;
     private final ToolListener listener;
     private PlayerCfg cfg;
     private final Map<Integer, Integer> portMap = new LinkedHashMap<>();
@@ -62,8 +64,9 @@ public final class RobotSession implements AutoCloseable {
     private SessionState state = SessionState.STARTING;
     private final CompletableFuture<String> failed = new CompletableFuture<>();
 
-    private RobotSession(SessionConfig config, ToolListener listener) {
+    private RobotSession(SessionConfig config, CodecRegistry codecs, ToolListener listener) {
         this.config = config;
+        this.codecs = Objects.requireNonNull(codecs, "codecs");
         this.listener = listener == null ? ToolListener.NONE : listener;
     }
 
@@ -85,12 +88,23 @@ public final class RobotSession implements AutoCloseable {
     };
 
     /**
-     * Starts a session.
+     * Starts a session whose spy decodes with Player's standard interfaces ({@link CodecRegistry#standard()}).
      *
      * @throws SessionException naming what failed and where; nothing of the session is left running
      */
     public static RobotSession start(SessionConfig config, ToolListener listener) throws SessionException {
-        RobotSession s = new RobotSession(config, listener);
+        return start(config, CodecRegistry.standard(), listener);
+    }
+
+    /**
+     * Starts a session whose spy decodes with {@code codecs} (in the workbench: the standard interfaces
+     * plus every contributed decoder).
+     *
+     * @throws SessionException naming what failed and where; nothing of the session is left running
+     */
+    public static RobotSession start(SessionConfig config, CodecRegistry codecs, ToolListener listener)
+            throws SessionException {
+        RobotSession s = new RobotSession(config, codecs, listener);
         try {
             s.startParts();
             return s;
@@ -188,7 +202,7 @@ public final class RobotSession implements AutoCloseable {
                 throw new IOException("cannot write the spy log " + config.log() + ": " + e.getMessage(), e);
             }
         }
-        pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder, OBSERVER_QUEUE_BYTES);
+        pipeline = new ObservationPipeline(bus, new PlayerDecoder(codecs), recorder, OBSERVER_QUEUE_BYTES);
         spy = new NetworkSpy(routes, pipeline);
         configureHolds(spy, config.spy());
         spy.start();

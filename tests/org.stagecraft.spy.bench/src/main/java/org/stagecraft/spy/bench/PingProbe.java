@@ -13,10 +13,14 @@ import java.util.function.BooleanSupplier;
  * {@link System#nanoTime()}: what a PULL-mode robot program waits for on every cycle.
  */
 final class PingProbe {
-    private static final int WARMUP = 200;
+    static final int WARMUP = 200;
 
     /** Round-trip times in microseconds, sorted. */
-    record Rtts(double[] sortedMicros) {
+    record Rtts(double[] sortedMicros, int pings) {
+        Rtts(double[] sortedMicros) {
+            this(sortedMicros, sortedMicros.length + WARMUP);
+        }
+
         double quantile(double q) {
             if (sortedMicros.length == 0) {
                 return Double.NaN;
@@ -32,6 +36,14 @@ final class PingProbe {
 
     /** Pings at most {@code max} times after a warm-up, and stops early once {@code more} says so. */
     static Rtts run(InetSocketAddress at, Workload w, int max, BooleanSupplier more) throws IOException {
+        return run(at, w, max, more, 0);
+    }
+
+    /**
+     * Pings at most {@code max} times after a warm-up, one every {@code intervalNanos} at most (0: back
+     * to back), and stops early once {@code more} says so.
+     */
+    static Rtts run(InetSocketAddress at, Workload w, int max, BooleanSupplier more, long intervalNanos) throws IOException {
         try (Socket s = new Socket()) {
             s.setTcpNoDelay(true);
             s.connect(at);
@@ -43,7 +55,14 @@ final class PingProbe {
             byte[] reply = new byte[w.pingReply().length];
             double[] rtts = new double[max];
             int n = 0;
+            long next = System.nanoTime();
             for (int i = 0; i < WARMUP + max && (i < WARMUP || more.getAsBoolean()); i++) {
+                if (intervalNanos > 0 && i >= WARMUP) {
+                    next += intervalNanos;
+                    for (long wait = next - System.nanoTime(); wait > 0; wait = next - System.nanoTime()) {
+                        java.util.concurrent.locks.LockSupport.parkNanos(wait);
+                    }
+                }
                 long t0 = System.nanoTime();
                 out.write(w.pingRequest());
                 if (in.readNBytes(reply, 0, reply.length) != reply.length) {
@@ -56,7 +75,7 @@ final class PingProbe {
             }
             double[] sorted = Arrays.copyOf(rtts, n);
             Arrays.sort(sorted);
-            return new Rtts(sorted);
+            return new Rtts(sorted, WARMUP + n);
         }
     }
 }

@@ -66,11 +66,11 @@ final class RecordedPlayers implements AutoCloseable {
         return s;
     }
 
-    private interface Handler {
+    interface Handler {
         void handle(Socket s);
     }
 
-    private static void acceptLoop(ServerSocket server, Handler handler) {
+    static void acceptLoop(ServerSocket server, Handler handler) {
         while (!server.isClosed()) {
             try {
                 Socket s = server.accept();
@@ -81,7 +81,7 @@ final class RecordedPlayers implements AutoCloseable {
         }
     }
 
-    private static void answerPings(Socket s, Workload w) {
+    static void answerPings(Socket s, Workload w) {
         try (s) {
             s.setTcpNoDelay(true);
             InputStream in = s.getInputStream();

@@ -68,6 +68,11 @@ final class SocatRelay implements Relay {
     }
 
     @Override
+    public List<Long> pids() {
+        return processes.stream().map(Process::pid).toList();
+    }
+
+    @Override
     public void close() {
         for (Process p : processes) {
             p.descendants().forEach(ProcessHandle::destroy);

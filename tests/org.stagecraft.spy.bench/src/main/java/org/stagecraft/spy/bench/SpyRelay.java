@@ -60,6 +60,18 @@ final class SpyRelay implements Relay {
     }
 
     @Override
+    public List<Long> pids() {
+        return process == null ? List.of() : List.of(process.pid());
+    }
+
+    /** From the spy's own report line: "... N bytes not observed ...". */
+    @Override
+    public long unobservedBytes() {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\d+) bytes not observed").matcher(report);
+        return m.find() ? Long.parseLong(m.group(1)) : (depth == SpyServer.Depth.RELAY ? -1 : Long.MAX_VALUE);
+    }
+
+    @Override
     public void close() throws IOException {
         if (process == null) {
             return;

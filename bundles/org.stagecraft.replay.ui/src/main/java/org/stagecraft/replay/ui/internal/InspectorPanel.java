@@ -29,6 +29,7 @@ import org.stagecraft.replay.analysis.MessageFilter;
 import org.stagecraft.replay.analysis.MessageWindow;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
+import org.stagecraft.replay.session.SharedLog;
 
 /**
  * The packet inspector: a virtual table of a {@link MessageWindow} (a few hundred filtered entries

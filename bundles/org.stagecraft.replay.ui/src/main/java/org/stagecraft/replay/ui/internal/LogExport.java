@@ -43,12 +43,15 @@ public final class LogExport {
     private LogExport() {
     }
 
-    /** A scheduled job writing the log in {@code file} (what {@code filter} takes) as {@code kind} to {@code out}. */
+    /**
+     * A scheduled job writing the log in {@code file} (what {@code filter} takes) as {@code kind} to {@code out},
+     * decoding with {@code registry} (the workbench's: contributed decoders included).
+     */
     public static Job start(Path file, Kind kind, ExportFilter filter, CodecRegistry registry, Path out) {
         Job job = Job.create("Export " + file.getFileName() + " to " + out.getFileName(), monitor -> {
             SessionLog log;
             try {
-                log = SessionLogs.open(file);
+                log = SessionLogs.open(file, registry); // decoded as the editor shows it
             } catch (IOException | RuntimeException e) {
                 return failed(kind, file, out, e, ""); // nothing written: a file already at out stays
             }

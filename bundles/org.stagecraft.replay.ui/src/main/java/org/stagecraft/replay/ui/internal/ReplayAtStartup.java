@@ -10,6 +10,7 @@ import org.eclipse.ui.IStartup;
 import org.eclipse.ui.IWorkbench;
 import org.eclipse.ui.IWorkbenchListener;
 import org.eclipse.ui.PlatformUI;
+import org.stagecraft.core.extensions.Contributions;
 import org.stagecraft.core.streams.WorkbenchBus;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.log.SessionLogs;
@@ -63,7 +64,7 @@ public final class ReplayAtStartup implements IStartup {
     public static Running start(Path path, StreamBus bus) throws IOException {
         // the bus's world model must listen before the first geometry reply is replayed
         SharedWorld.of(bus);
-        SessionLog sessionLog = SessionLogs.open(path);
+        SessionLog sessionLog = SessionLogs.open(path, Contributions.workbench().codecs()); // contributed decoders too
         try {
             Replayer replayer = new Replayer(sessionLog, bus, ReplayClock.system());
             ReplayLoop.start(replayer);

@@ -10,37 +10,25 @@ import org.eclipse.swt.widgets.Combo;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Label;
 import org.eclipse.swt.widgets.Text;
+import org.stagecraft.replay.session.Speeds;
 
 /**
  * Play/pause, step back and forward one message, speed (0.1x to 16x), the replay time (type a time and
- * press Enter to seek) and the editor's other commands. Only widgets: what they do is the host's.
+ * press Enter to seek) and the editor's other commands. Only widgets: what they do is the host's (the
+ * buttons run the editor's {@link EditorCommand}s, the same a key bound to them runs).
  */
 public final class TransportBar {
     /** The speeds offered, within the Replayer's 0.1x..16x. */
-    public static final double[] SPEEDS = { 0.1, 0.25, 0.5, 1, 2, 4, 8, 16 };
+    private static final double[] SPEEDS = Speeds.offered();
 
-    /** What the buttons do. */
+    /** What the controls do: the buttons run the editor's commands. */
     public interface Host {
-        void toStart();
-
-        void stepBack();
-
-        void playPause();
-
-        void stepForward();
+        void run(EditorCommand command);
 
         void speed(double speed);
 
-        /** Seek to seconds after the log's start; false when the text is no time. */
+        /** Seek to seconds after the log's start. */
         void seekSeconds(double seconds);
-
-        void reload();
-
-        void showInRobotView();
-
-        void plot();
-
-        void export(Composite anchor);
     }
 
     private final Composite root;
@@ -57,15 +45,15 @@ public final class TransportBar {
         layout.center = true;
         layout.marginTop = layout.marginBottom = 2;
         root.setLayout(layout);
-        button("\u23EE", "To the start", host::toStart);
-        button("\u25C0|", "Step back one message (publishes it again)", host::stepBack);
-        play = button("\u25B6 Play", "Play / pause", host::playPause);
+        button("\u23EE", "To the start", () -> host.run(EditorCommand.TO_START));
+        button("\u25C0|", "Step back one message (publishes it again)", () -> host.run(EditorCommand.STEP_BACK));
+        play = button("\u25B6 Play", "Play / pause", () -> host.run(EditorCommand.PLAY_PAUSE));
         play.setLayoutData(new RowData(90, SWT.DEFAULT));
-        button("|\u25B6", "Step forward one message (publishes it)", host::stepForward);
+        button("|\u25B6", "Step forward one message (publishes it)", () -> host.run(EditorCommand.STEP_FORWARD));
         new Label(root, SWT.NONE).setText(" Speed:");
         speed = new Combo(root, SWT.READ_ONLY | SWT.DROP_DOWN);
         for (double s : SPEEDS) {
-            speed.add(speedText(s));
+            speed.add(Speeds.text(s));
         }
         speed.select(3);
         speed.addListener(SWT.Selection, e -> host.speed(SPEEDS[speed.getSelectionIndex()]));
@@ -85,13 +73,10 @@ public final class TransportBar {
         });
         length = new Label(root, SWT.NONE);
         length.setText("/ 0.000 s");
-        button("Reload", "Read the file again (a log still being written has grown)", host::reload);
-        button("Show in Robot View", "Open a Robot View that follows this log's replay", host::showInRobotView);
-        button("Plot", "Open a Plot of this log", host::plot);
-        Button export = new Button(root, SWT.PUSH);
-        export.setText("Export \u25BE");
-        export.setToolTipText("Export to CSV, Player writelog or MCAP with JSON channels");
-        export.addListener(SWT.Selection, e -> host.export(root));
+        button("Reload", "Read the file again (a log still being written has grown)", () -> host.run(EditorCommand.RELOAD));
+        button("Show in Robot View", "Open a Robot View that follows this log's replay", () -> host.run(EditorCommand.SHOW_IN_ROBOT_VIEW));
+        button("Plot", "Open a Plot of this log", () -> host.run(EditorCommand.PLOT));
+        button("Export \u25BE", "Export to CSV, Player writelog or MCAP with JSON channels", () -> host.run(EditorCommand.EXPORT));
     }
 
     private Button button(String text, String tip, Runnable run) {
@@ -100,10 +85,6 @@ public final class TransportBar {
         b.setToolTipText(tip);
         b.addListener(SWT.Selection, e -> run.run());
         return b;
-    }
-
-    static String speedText(double s) {
-        return (s == Math.rint(s) ? Integer.toString((int) s) : Double.toString(s)) + "x";
     }
 
     public Composite control() {

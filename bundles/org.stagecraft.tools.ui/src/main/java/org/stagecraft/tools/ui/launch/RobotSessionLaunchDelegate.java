@@ -11,6 +11,7 @@ import org.eclipse.debug.core.ILaunch;
 import org.eclipse.debug.core.ILaunchConfiguration;
 import org.eclipse.debug.core.ILaunchesListener2;
 import org.eclipse.debug.core.model.LaunchConfigurationDelegate;
+import org.stagecraft.core.extensions.Contributions;
 import org.stagecraft.tools.session.RobotSession;
 import org.stagecraft.tools.session.SessionException;
 import org.stagecraft.tools.ui.view.ToolsModel;
@@ -47,7 +48,8 @@ public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegat
         m.subTask("starting tools, Player and the spy");
         RobotSession session;
         try {
-            session = RobotSession.start(settings.config(), parts);
+            // the spy decodes what plug-ins contribute too
+            session = RobotSession.start(settings.config(), Contributions.workbench().codecs(), parts);
         } catch (SessionException e) {
             parts.failed(e.getMessage(), e);
             throw new CoreException(Status.error("Robot Session '" + configuration.getName() + "' did not start: "

@@ -87,12 +87,14 @@ public final class SessionParts implements ToolListener {
         holds = SessionHolds.attach(this, s);
         s.failed().thenAccept(this::sessionFailed);
         s.spy().addListener(n -> spyNotice(p, n));
+        s.pipeline().addListener(n -> spyNotice(p, n)); // observation failing: the wire goes on, what is shown is incomplete
     }
 
     /**
-     * Player refusing a robot program's connection: said in the spy's console at once, shown in the
-     * Tools view's row and, when the program lost its connection, in the Error Log; the log and the
-     * bus have it too, but nobody watches those for it.
+     * Player refusing a robot program's connection, or the spy's observation failing: said in the
+     * spy's console at once, shown in the Tools view's row and, when something was lost (the
+     * program's connection, or what the spy observes), in the Error Log; the log and the bus have it
+     * too, but nobody watches those for it.
      */
     private void spyNotice(SessionPartProcess p, SpyNotice n) {
         if (!n.kind().isFailure()) {
@@ -253,7 +255,9 @@ public final class SessionParts implements ToolListener {
             if (spy != null) {
                 spy.stdout("stopped: " + s.spy().totalConnections() + " connections, " + s.pipeline().messages()
                         + " messages, " + (s.spy().bytesForwarded(Direction.CLIENT_TO_SERVER)
-                                + s.spy().bytesForwarded(Direction.SERVER_TO_CLIENT)) + " bytes relayed"
+                                + s.spy().bytesForwarded(Direction.SERVER_TO_CLIENT)) + " bytes relayed, "
+                        + s.pipeline().droppedBytes() + " bytes unobserved"
+                        + (s.pipeline().internalErrors() > 0 ? "; " + s.pipeline().internalErrors() + " observation failures" : "")
                         + (s.pipeline().recorderError() != null ? "; log error: " + s.pipeline().recorderError() : ""));
                 ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.STOPPED, -1, 0, null,
                         s.spy().totalConnections() + " connections relayed"));

@@ -1,19 +1,20 @@
 package org.stagecraft.tools.ui.registry;
 
+import static org.stagecraft.core.extensions.ExtensionXml.ATT_CLASS;
+import static org.stagecraft.core.extensions.ExtensionXml.ATT_NAME;
+import static org.stagecraft.core.extensions.ExtensionXml.EL_TOOL_TYPE;
+
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
-import java.util.Set;
 import java.util.function.Consumer;
 
-import org.eclipse.core.runtime.CoreException;
-import org.eclipse.core.runtime.IConfigurationElement;
 import org.eclipse.core.runtime.IExtensionRegistry;
 import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Platform;
-import org.eclipse.core.runtime.Status;
+import org.stagecraft.core.extensions.ExtensionReader;
+import org.stagecraft.core.extensions.ExtensionXml;
 import org.stagecraft.tools.types.ToolType;
 
 /**
@@ -22,7 +23,7 @@ import org.stagecraft.tools.types.ToolType;
  * element, and skipped; it never keeps the others from loading.
  */
 public final class ToolTypeExtensionRegistry {
-    public static final String EXTENSION_POINT = "org.stagecraft.tools.ui.toolTypes";
+    public static final String EXTENSION_POINT = ExtensionXml.TOOL_TYPES;
     private static final String BUNDLE = "org.stagecraft.tools.ui";
 
     /** One loaded contribution. */
@@ -34,34 +35,12 @@ public final class ToolTypeExtensionRegistry {
 
     public static List<Contribution> load(IExtensionRegistry extensions, Consumer<IStatus> problems) {
         List<Contribution> loaded = new ArrayList<>();
-        Set<String> ids = new HashSet<>();
-        for (IConfigurationElement e : extensions.getConfigurationElementsFor(EXTENSION_POINT)) {
-            String where = "plug-in " + e.getContributor().getName() + ", extension " + EXTENSION_POINT + ", element <"
-                    + e.getName() + ">";
-            try {
-                if (!"toolType".equals(e.getName())) {
-                    throw new IllegalArgumentException("unknown element");
-                }
-                String id = trimmed(e.getAttribute("id"));
-                if (id == null) {
-                    throw new IllegalArgumentException("toolType has no id");
-                }
-                where += " id '" + id + "'";
-                if (ids.contains(id)) {
-                    throw new IllegalArgumentException("another tool type already has id '" + id + "'");
-                }
-                Object o = e.createExecutableExtension("class");
-                if (!(o instanceof ToolType t)) {
-                    throw new IllegalArgumentException("class " + e.getAttribute("class") + " does not implement "
-                            + ToolType.class.getName());
-                }
-                ids.add(id);
-                String name = trimmed(e.getAttribute("name"));
-                loaded.add(new Contribution(id, name == null ? id : name, e.getContributor().getName(), t));
-            } catch (CoreException | RuntimeException | LinkageError ex) {
-                problems.accept(Status.error(where + ": " + ex.getMessage(), ex));
-            }
-        }
+        new ExtensionReader(EXTENSION_POINT, problems).read(extensions, e -> {
+            e.expect(EL_TOOL_TYPE);
+            String id = e.id("tool type");
+            ToolType t = e.create(ATT_CLASS, ToolType.class);
+            loaded.add(new Contribution(id, e.attribute(ATT_NAME, id), e.contributor(), t));
+        });
         return loaded;
     }
 
@@ -73,9 +52,5 @@ public final class ToolTypeExtensionRegistry {
 
     public static Optional<Contribution> find(String id) {
         return load().stream().filter(c -> c.id().equals(id)).findFirst();
-    }
-
-    private static String trimmed(String s) {
-        return s == null || s.isBlank() ? null : s.trim();
     }
 }

@@ -1,4 +1,4 @@
-package org.stagecraft.replay.ui.internal;
+package org.stagecraft.replay.session;
 
 /**
  * How long to wait before looking at a growing log again: reading it again costs a reopen (a spy log
@@ -25,6 +25,11 @@ public final class FollowPace {
     /** The last timeline pass took this long (any thread). */
     public void timelinePassed(long nanos) {
         timelineNanos = nanos;
+    }
+
+    /** The floor: how often a cheap log is looked at. */
+    public int minMillis() {
+        return minMillis;
     }
 
     /** The least time between the start of one look and the start of the next. */

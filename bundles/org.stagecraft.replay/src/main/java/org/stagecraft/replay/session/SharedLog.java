@@ -1,4 +1,4 @@
-package org.stagecraft.replay.ui.internal;
+package org.stagecraft.replay.session;
 
 import java.io.IOException;
 

@@ -1,0 +1,61 @@
+package org.stagecraft.contributions.tests;
+
+import java.time.Duration;
+import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.locks.LockSupport;
+import java.util.function.BooleanSupplier;
+
+import org.eclipse.swt.widgets.Display;
+
+/**
+ * The test runs off the UI thread (it waits for processes and sockets): it checks a condition other threads
+ * make true again and again until it holds or the timeout fails the test, and runs UI work on the display.
+ */
+final class Await {
+    private Await() {
+    }
+
+    static void until(String what, Duration timeout, BooleanSupplier condition) {
+        until(what, timeout, condition, () -> "");
+    }
+
+    /** As {@link #until(String, Duration, BooleanSupplier)}; a timeout also says what {@code state} tells. */
+    static void until(String what, Duration timeout, BooleanSupplier condition, java.util.function.Supplier<String> state) {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > deadline) {
+                throw new AssertionError("timed out after " + timeout + " waiting until " + what + " " + state.get());
+            }
+            LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(20));
+        }
+    }
+
+    /** Runs {@code work} on the UI thread and returns what it returns; its exception fails the caller. */
+    static <T> T ui(Callable<T> work) {
+        AtomicReference<T> result = new AtomicReference<>();
+        AtomicReference<Exception> failure = new AtomicReference<>();
+        Display.getDefault().syncExec(() -> {
+            try {
+                result.set(work.call());
+            } catch (Exception e) {
+                failure.set(e);
+            }
+        });
+        if (failure.get() != null) {
+            throw new AssertionError("on the UI thread: " + failure.get(), failure.get());
+        }
+        return result.get();
+    }
+
+    /** Waits until {@code condition}, checked on the UI thread, holds. */
+    static void untilUi(String what, Duration timeout, Callable<Boolean> condition) {
+        until(what, timeout, () -> ui(condition));
+    }
+
+    /** As {@link #untilUi(String, Duration, Callable)}; a timeout also says what {@code state} (on the UI thread) tells. */
+    static void untilUi(String what, Duration timeout, Callable<Boolean> condition, Callable<String> state) {
+        until(what, timeout, () -> ui(condition), () -> ui(state));
+    }
+}
