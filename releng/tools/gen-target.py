@@ -672,6 +672,11 @@ def wrap_lines(bsn, name, version, imports, extra=()):
 # inside (Bundle-NativeCode, linux/amd64 among them).  Pinned: the log format must not move with it.
 ZSTD_JNI_VERSION = "1.5.7-28"
 
+# The live view over the Foxglove WebSocket protocol (org.stagecraft.foxglove.live): Java-WebSocket,
+# an OSGi bundle as published (Bundle-SymbolicName "Java-WebSocket"), whose only dependency is
+# slf4j-api [2.0,3) (already in the target for pty4j).  Pinned: the server is tested against it.
+JAVA_WEBSOCKET_VERSION = "1.6.0"
+
 JOGL_VERSION = "2.6.0"
 # JOGL in OSGi.  Gluegen loads every JNI library (its own and JOGL's) with System.load/loadLibrary
 # called from its own class JNILibLoaderBase, and the JVM binds a JNI library to the class loader of
@@ -865,6 +870,12 @@ def main():
       'includeDependencyScopes="compile" includeSource="false" missingManifest="error">')
     w("      <dependencies>")
     w(dep_xml("com.github.luben", "zstd-jni", ZSTD_JNI_VERSION))
+    w("      </dependencies>")
+    w("    </location>")
+    w('    <location type="Maven" label="Java-WebSocket (the Foxglove live server)" includeDependencyDepth="none" '
+      'includeDependencyScopes="compile" includeSource="false" missingManifest="error">')
+    w("      <dependencies>")
+    w(dep_xml("org.java-websocket", "Java-WebSocket", JAVA_WEBSOCKET_VERSION))
     w("      </dependencies>")
     w("    </location>")
     out.extend(pty4j_locations())

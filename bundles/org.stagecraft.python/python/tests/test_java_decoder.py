@@ -29,9 +29,10 @@ def stagecraft_decode(trace: Path) -> list[dict]:
     # what ./stagecraft puts on the command line tool's class path (it would start a Maven build without them)
     bundles = REPO / "bundles"
     needed = [bundles / b / "target" / "classes" / "org" for b in (
-        "org.stagecraft.player", "org.stagecraft.recording", "org.stagecraft.streams", "org.stagecraft.spy",
-        "org.stagecraft.replay", "org.stagecraft.demo", "org.stagecraft.cli")]
-    needed += [bundles / "org.stagecraft.cli" / "target" / "lib" / jar for jar in ("gson.jar", "zstd-jni.jar")]
+        "org.stagecraft.mcap", "org.stagecraft.player", "org.stagecraft.recording", "org.stagecraft.streams",
+        "org.stagecraft.spy", "org.stagecraft.foxglove", "org.stagecraft.replay", "org.stagecraft.cli")]
+    needed += [bundles / "org.stagecraft.cli" / "target" / "lib" / jar
+               for jar in ("gson.jar", "zstd-jni.jar", "Java-WebSocket.jar", "slf4j-api.jar")]
     missing = [str(p) for p in needed if not p.exists()]
     if missing:
         pytest.fail(f"the Java command line tool is not built ({', '.join(missing)} missing): run "

@@ -10,8 +10,11 @@ public final class Main {
               decode FILE   print every banner and Player message of a trace as one JSON object per line
               stats FILE    count messages per direction, interface, type and subtype
               spy --listen [HOST:]PORT --to HOST:PORT [...] [--bind ADDR] [--log FILE] [--upstream-grace SECONDS]
+                  [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]]
                             relay robot programs to Player, decode and log everything (Ctrl-C stops);
-                            a program that comes before Player waits for it up to --upstream-grace (5 s)
+                            a program that comes before Player waits for it up to --upstream-grace (5 s);
+                            --foxglove serves the live streams to Foxglove/Lichtblick (ws://, loopback unless
+                            ADDR or --bind says otherwise; at most --foxglove-queue (1024) wait per viewer)
               export FILE --format csv|writelog|mcap [--from S] [--until S] [--stream PATTERN] [--grep TEXT] [--out FILE]
                             a log (spy log, trace or writelog file), or part of it, in another format
               replay FILE --to [PORT=]HOST:PORT [...] [--speed X] [--loop]

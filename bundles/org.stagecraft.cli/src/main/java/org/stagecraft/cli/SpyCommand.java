@@ -13,7 +13,14 @@ import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
+import java.util.function.Function;
 
+import org.stagecraft.foxglove.FoxgloveSink;
+import org.stagecraft.foxglove.live.BusRelay;
+import org.stagecraft.foxglove.live.EndOfConnections;
+import org.stagecraft.foxglove.live.FoxgloveServer;
+import org.stagecraft.foxglove.live.LiveScene;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.wire.Direction;
@@ -25,18 +32,38 @@ import org.stagecraft.spy.proxy.Route;
 import org.stagecraft.spy.proxy.SpyListener;
 import org.stagecraft.spy.proxy.WireObserver;
 import org.stagecraft.streams.StreamBus;
+import org.stagecraft.streams.StreamMessage;
 
 /**
- * {@code stagecraft spy --listen PORT --to HOST:PORT [...] [--bind ADDR] [--log FILE]}: the Network
- * Spy without the IDE, e.g. on the robot's own computer. Prints a one-line summary every second and
- * stops cleanly on Ctrl-C, closing the log.
+ * {@code stagecraft spy --listen PORT --to HOST:PORT [...] [--bind ADDR] [--log FILE] [--foxglove [ADDR:]PORT]}:
+ * the Network Spy without the IDE, e.g. on the robot's own computer. Prints a one-line summary every
+ * second and stops cleanly on Ctrl-C, closing the log. With {@code --foxglove}, it also serves the live
+ * streams to Foxglove or Lichtblick over the Foxglove WebSocket protocol (docs/foxglove.md).
  */
 final class SpyCommand {
     static final String USAGE = "usage: stagecraft spy --listen [HOST:]PORT --to HOST:PORT [--listen ... --to ...]"
-            + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS]";
+            + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS] [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]]";
     private static final long OBSERVER_QUEUE_BYTES = 64L << 20;
 
-    record Options(List<Route> routes, Path log, Duration upstreamGrace) {
+    /** The live view's converter: the export's channels (Foxglove's schemas, and Player's own messages decoded). */
+    static final Function<FoxgloveSink, Consumer<StreamMessage>> FOXGLOVE_SCENE = LiveScene.converter();
+
+    /**
+     * @param foxglove      where to serve the live view, or null for none
+     * @param foxgloveQueue how many messages may wait for each viewer before new ones are dropped
+     */
+    record Options(List<Route> routes, Path log, Duration upstreamGrace, InetSocketAddress foxglove, int foxgloveQueue) {
+    }
+
+    private final Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter;
+
+    SpyCommand() {
+        this(FOXGLOVE_SCENE);
+    }
+
+    /** For tests: another converter for the live view. */
+    SpyCommand(Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter) {
+        this.liveConverter = liveConverter;
     }
 
     int run(String[] args, PrintStream out, PrintStream err) {
@@ -101,6 +128,18 @@ final class SpyCommand {
             spy.close();
             return 1;
         }
+        // The Foxglove server too, before the log: a port in use must not leave an empty log either.
+        FoxgloveServer foxglove = null;
+        if (o.foxglove() != null) {
+            try {
+                foxglove = FoxgloveServer.start(o.foxglove(), "Stagecraft spy", o.foxgloveQueue());
+            } catch (IOException e) {
+                err.println("stagecraft spy: " + e.getMessage());
+                spy.close();
+                return 1;
+            }
+            foxglove.onNotice(n -> err.print((tty ? "\n" : "") + "stagecraft spy: foxglove: " + n + (tty ? "" : "\n")));
+        }
         LogRecorder recorder = null;
         if (o.log() != null) {
             try {
@@ -111,19 +150,26 @@ final class SpyCommand {
             } catch (IOException e) {
                 err.println("stagecraft spy: cannot write the log " + o.log() + ": " + LogFileProblem.reason(o.log(), e));
                 spy.close();
+                if (foxglove != null) {
+                    foxglove.close();
+                }
                 return 1;
             }
         }
         StreamBus bus = new StreamBus();
-        ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder,
-                OBSERVER_QUEUE_BYTES);
+        // The converter runs on the bus's delivery (one message at a time), never on the spy's threads.
+        Live live = foxglove == null ? null
+                : new Live(foxglove, BusRelay.start(bus, foxglove, liveConverter, BusRelay.DEFAULT_CAPACITY));
+        // with a live view, the recorder hook also tells it when a connection has ended
+        ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()),
+                live != null ? new EndOfConnections(recorder, bus) : recorder, OBSERVER_QUEUE_BYTES);
         pipeline.addListener(say);
         spy.observer(pipeline);
         try {
             spy.start();
         } catch (IOException e) {
             err.println("stagecraft spy: " + e.getMessage());
-            stop(spy, pipeline, bus);
+            stop(spy, pipeline, live, bus);
             return 1;
         }
         for (int i = 0; i < o.routes().size(); i++) {
@@ -134,7 +180,11 @@ final class SpyCommand {
         if (o.log() != null) {
             err.println("logging to " + o.log());
         }
-        Summary summary = new Summary(spy, pipeline);
+        if (live != null) {
+            err.println("serving Foxglove on " + live.server().uri()
+                    + (o.foxglove().getAddress().isAnyLocalAddress() ? " (all interfaces)" : ""));
+        }
+        Summary summary = new Summary(spy, pipeline, live);
         try {
             while (!stop.await(1, TimeUnit.SECONDS)) {
                 String line = summary.next();
@@ -147,17 +197,35 @@ final class SpyCommand {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        stop(spy, pipeline, bus);
+        stop(spy, pipeline, live, bus);
         err.println((tty ? "\n" : "") + "stopped: " + summary.totals());
         return 0;
     }
 
-    private static void stop(NetworkSpy spy, ObservationPipeline pipeline, StreamBus bus) {
+    /** The live view: the Foxglove server and the relay that feeds it from the bus. */
+    record Live(FoxgloveServer server, BusRelay relay) {
+        /**
+         * Viewers (connected now, or since the start for the totals) and what was not shown live: frames a
+         * viewer was too slow for, bus messages the converter was too slow for.
+         */
+        String summary(boolean totals) {
+            FoxgloveServer.Counters c = server.counters();
+            return String.format(Locale.ROOT, "foxglove %d viewers%s, %d dropped, %d not converted",
+                    totals ? c.viewersServed() : c.viewers(), totals ? " served" : "", c.framesDropped(), relay.dropped());
+        }
+    }
+
+    private static void stop(NetworkSpy spy, ObservationPipeline pipeline, Live live, StreamBus bus) {
         spy.close();
         try {
             pipeline.close();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+        if (live != null) {
+            live.relay().awaitIdle(Duration.ofSeconds(10)); // what the spy saw before the stop still reaches the viewers
+            live.relay().close();
+            live.server().close();
         }
         bus.close();
     }
@@ -166,6 +234,8 @@ final class SpyCommand {
         List<Route> routes = new ArrayList<>();
         String bind = Route.DEFAULT_BIND;
         Path log = null;
+        String foxglove = null;
+        int foxgloveQueue = FoxgloveServer.DEFAULT_MAX_QUEUED_FRAMES;
         Duration grace = NetworkSpy.DEFAULT_UPSTREAM_GRACE;
         List<String> listens = new ArrayList<>();
         List<String> tos = new ArrayList<>();
@@ -181,6 +251,8 @@ final class SpyCommand {
                 case "--bind" -> bind = v;
                 case "--log" -> log = Path.of(v);
                 case "--upstream-grace" -> grace = seconds(a, v);
+                case "--foxglove" -> foxglove = v;
+                case "--foxglove-queue" -> foxgloveQueue = count(a, v);
                 default -> throw new IllegalArgumentException("unknown option " + a);
             }
         }
@@ -193,7 +265,27 @@ final class SpyCommand {
             InetSocketAddress to = Route.address(tos.get(i), "127.0.0.1");
             routes.add(new Route(listen, to));
         }
-        return new Options(routes, log, grace);
+        InetSocketAddress live = null;
+        if (foxglove != null) {
+            try {
+                live = Route.address(foxglove, bind); // a bare port listens where the spy does (--bind)
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("--foxglove: " + e.getMessage(), e);
+            }
+        }
+        return new Options(routes, log, grace, live, foxgloveQueue);
+    }
+
+    private static int count(String option, String text) {
+        try {
+            int n = Integer.parseInt(text);
+            if (n >= 1 && n <= 1_000_000) {
+                return n;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new IllegalArgumentException(option + " '" + text + "' is not a number of messages 1..1000000");
     }
 
     private static Duration seconds(String option, String text) {
@@ -213,13 +305,15 @@ final class SpyCommand {
     private static final class Summary {
         private final NetworkSpy spy;
         private final ObservationPipeline pipeline;
+        private final Live live;
         private long lastMessages;
         private long lastBytes;
         private long lastNanos = System.nanoTime();
 
-        Summary(NetworkSpy spy, ObservationPipeline pipeline) {
+        Summary(NetworkSpy spy, ObservationPipeline pipeline, Live live) {
             this.spy = spy;
             this.pipeline = pipeline;
+            this.live = live;
         }
 
         String next() {
@@ -228,10 +322,11 @@ final class SpyCommand {
             long messages = pipeline.messages();
             long bytes = spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT);
             String line = String.format(Locale.ROOT,
-                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s%s",
+                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s%s%s",
                     spy.openConnections(), spy.totalConnections(), (messages - lastMessages) / secs,
                     (bytes - lastBytes) / secs / 1000, pipeline.decodeProblems(), pipeline.unframedBytes(),
-                    pipeline.droppedBytes(), failures(" | "), pipeline.recorderError() != null ? " | " + pipeline.recorderError() : "");
+                    pipeline.droppedBytes(), failures(" | "), live != null ? " | " + live.summary(false) : "",
+                    pipeline.recorderError() != null ? " | " + pipeline.recorderError() : "");
             lastMessages = messages;
             lastBytes = bytes;
             lastNanos = now;
@@ -241,10 +336,11 @@ final class SpyCommand {
         String totals() {
             return String.format(Locale.ROOT,
                     "%d connections, %d messages, %d bytes forwarded, %d undecodable messages, %d unframed bytes,"
-                            + " %d bytes unobserved%s%s",
+                            + " %d bytes unobserved%s%s%s",
                     spy.totalConnections(), pipeline.messages(),
                     spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT),
                     pipeline.decodeProblems(), pipeline.unframedBytes(), pipeline.droppedBytes(), failures("; "),
+                    live != null ? "; " + live.summary(true) : "",
                     pipeline.recorderError() != null ? "; " + pipeline.recorderError() : "");
         }
 

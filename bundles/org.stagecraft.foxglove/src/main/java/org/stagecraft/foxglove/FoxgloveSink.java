@@ -14,4 +14,11 @@ public interface FoxgloveSink {
      * @param json             the message, UTF-8 JSON valid against the channel's schema
      */
     void publish(FoxgloveChannel channel, long logTimeNanos, long publishTimeNanos, byte[] json);
+
+    /**
+     * The channel's stream has ended (its robot disconnected): the live server tells its viewers; a file
+     * has nothing to do. A channel may be advertised again later.
+     */
+    default void unadvertise(FoxgloveChannel channel) {
+    }
 }

@@ -2,6 +2,7 @@ package org.stagecraft.tools.ui;
 
 import org.osgi.framework.BundleActivator;
 import org.osgi.framework.BundleContext;
+import org.stagecraft.tools.ui.foxglove.FoxgloveLive;
 import org.stagecraft.tools.ui.launch.RunningSessions;
 
 /**
@@ -19,5 +20,6 @@ public final class ToolsUiActivator implements BundleActivator {
     @Override
     public void stop(BundleContext context) {
         RunningSessions.stopAll();
+        FoxgloveLive.get().shutdown();
     }
 }
