@@ -2,6 +2,7 @@ package org.stagecraft.spy.proxy;
 
 import java.io.IOException;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
@@ -158,6 +159,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private volatile String recorderError;
     private long lastFlushNanos = System.nanoTime();
     private final Set<ConnectionInfo> openConnections = new LinkedHashSet<>();
+    private final Map<Integer, MessageKeys> messageKeys = new HashMap<>();
 
     /**
      * @param recorder       the spy log, or null to record nothing
@@ -614,6 +616,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             case Noticed n -> diagnostic(n.connection(), Direction.SERVER_TO_CLIENT, 0, n.notice().text(), n.t());
             case Closed cl -> {
                 openConnections.remove(cl.connection());
+                messageKeys.remove(cl.connection().id());
                 inflows.remove(cl.connection().id());
                 record(r -> r.closed(cl.connection(), cl.t(), cl.reason()));
                 bus.release(cl.connection().client()); // its streams end here: the bus forgets them (issue 17)
@@ -645,7 +648,12 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             case WireEvent.Frame f -> {
                 messages.increment();
                 MessageHeader h = f.header();
-                bus.publish(new StreamMessage(SpyStreams.messageKey(c, dir, h), t,
+                MessageKeys keys = messageKeys.get(c.id());
+                if (keys == null || !keys.isFor(c)) {
+                    keys = new MessageKeys(c);
+                    messageKeys.put(c.id(), keys);
+                }
+                bus.publish(new StreamMessage(keys.of(dir, h), t,
                         new SpyMessage(c, dir, f.offset(), m)));
                 if (m.hasProblem()) {
                     decodeProblems.increment();

@@ -493,9 +493,13 @@ class SpyLogTest {
         try (SpyLogReader r = SpyLogReader.open(log)) {
             assertTrue(r.recovered());
             assertEquals(Map.of("disk", "small"), r.metadata());
-            assertEquals(flushed, r.messageCount());
+            // every flushed message; the failed write may still have completed its chunk record (the
+            // disk filling up in the message indexes after it), which the reader then recovers too
+            long chunkAfter = written.size() - flushed;
+            assertTrue(r.messageCount() == flushed || r.messageCount() == flushed + chunkAfter,
+                    r.messageCount() + " recovered, " + flushed + " flushed");
             List<LogEntry.Wire> got = wires(all(r.entries()));
-            assertEquals(flushed, got.size());
+            assertEquals(r.messageCount(), got.size());
             for (int i = 0; i < got.size(); i++) {
                 assertArrayEquals(written.get(i), got.get(i).bytes());
                 assertEquals("garbage " + i, got.get(i).reason());

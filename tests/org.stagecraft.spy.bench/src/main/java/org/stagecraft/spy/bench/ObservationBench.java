@@ -1,5 +1,8 @@
 package org.stagecraft.spy.bench;
 
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadInfo;
+import java.lang.management.ThreadMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
@@ -38,6 +41,20 @@ public final class ObservationBench {
         }
     }
 
+    private static long processCpu() {
+        return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean())
+                .getProcessCpuTime();
+    }
+
+    private static long threadCpu(ThreadMXBean threads, String name) {
+        for (ThreadInfo t : threads.getThreadInfo(threads.getAllThreadIds())) {
+            if (t != null && t.getThreadName().equals(name)) {
+                return threads.getThreadCpuTime(t.getThreadId());
+            }
+        }
+        return -1;
+    }
+
     private static void run(Workload w, boolean log) throws Exception {
         Path file = log ? Files.createTempFile("observation-bench", ".mcap") : null;
         try (StreamBus bus = new StreamBus()) {
@@ -45,6 +62,9 @@ public final class ObservationBench {
             bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(1 << 16), m -> { });
             ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()),
                     log ? new LogRecorder(SpyLogWriter.create(file, Map.of())) : null, Long.MAX_VALUE);
+            ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+            long cpu0 = processCpu();
+            long main0 = threads.getCurrentThreadCpuTime();
             long t0 = System.nanoTime();
             int id = 1;
             for (RecordedConnection s : w.sessions()) {
@@ -58,11 +78,19 @@ public final class ObservationBench {
                 }
                 pipeline.closed(c, System.nanoTime(), "done");
             }
+            long feeding = threads.getCurrentThreadCpuTime() - main0;
+            // the observation thread's CPU time once it has published everything (it ends at close)
+            while (pipeline.heldBytes() > 0) { // every connection is closed: all its events are queued
+                Thread.onSpinWait();
+            }
+            long observer = threadCpu(threads, "stagecraft-spy-observer");
             pipeline.close();
             double s = (System.nanoTime() - t0) / 1e9;
-            System.out.printf("observation %-14s %8.1f MB/s %10.0f messages/s (%d messages, %d dropped bytes)%n",
-                    log ? "decode+bus+log" : "decode+bus", w.bytes() / 1e6 / s, pipeline.messages() / s, pipeline.messages(),
-                    pipeline.droppedBytes());
+            long n = pipeline.messages();
+            System.out.printf("observation %-14s %8.1f MB/s %10.0f messages/s (%d messages, %d dropped bytes);"
+                    + " CPU ns/message: framing+decoding %.0f, observation thread %.0f, whole process %.0f%n",
+                    log ? "decode+bus+log" : "decode+bus", w.bytes() / 1e6 / s, n / s, n, pipeline.droppedBytes(),
+                    (double) feeding / n, (double) observer / n, (double) (processCpu() - cpu0) / n);
         } finally {
             if (file != null) {
                 Files.deleteIfExists(file);

@@ -34,8 +34,13 @@ final class SpyRelay implements Relay {
 
     @Override
     public List<InetSocketAddress> start(List<InetSocketAddress> upstreams) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java"),
-                "--enable-native-access=ALL-UNNAMED", "-cp", ownJar(), SpyServer.class.getName(), depth.name(),
+        List<String> cmd = new ArrayList<>(List.of(ProcessHandle.current().info().command().orElse("java")));
+        // e.g. -Dstagecraft.bench.spyJvm="-Xmx128m -XX:+UseSerialGC" to measure the spy with a bounded heap
+        String jvm = System.getProperty("stagecraft.bench.spyJvm", "").trim();
+        if (!jvm.isEmpty()) {
+            cmd.addAll(List.of(jvm.split("\\s+")));
+        }
+        cmd.addAll(List.of("--enable-native-access=ALL-UNNAMED", "-cp", ownJar(), SpyServer.class.getName(), depth.name(),
                 logDir.toString()));
         for (InetSocketAddress up : upstreams) {
             cmd.add(String.valueOf(up.getPort()));
