@@ -6,8 +6,11 @@
    a node name drops `org.stagecraft.` and writes `.` as `_`). An edge in one and not the other fails.
 2. The rule: a bundle in the "Pure Java" table requires no `org.eclipse.*` bundle and imports no
    `org.eclipse.*` / `org.osgi.*` package; every bundle of bundles/ is in one of the two tables.
-3. API discipline: a package named `*.internal` is exported only with `x-internal:=true` or
-   `x-friends:=` (docs/architecture.md, "API discipline").
+3. API discipline (docs/architecture.md, "API discipline"): a package named `*.internal` is exported
+   only with `x-internal:=true` or `x-friends:=`; and no bundle's main code (bundles/*/src/main) or
+   plug-in test bundle (tests/* with a manifest) imports a class of another bundle's package that is
+   x-internal, or x-friends without naming it. (Tycho's build does not report such an access for
+   test sources, PDE does; this check makes it fail everywhere.)
 
 Exit status 1 with every disagreement named. `--self-test` first checks that a doc with an edge
 missing, an edge too many, and a pure bundle requiring Eclipse is each rejected.
@@ -58,6 +61,56 @@ def read_bundles(root):
         h = manifest_headers(mf.read_text(encoding="utf-8"))
         bundles[h["Bundle-SymbolicName"].split(";")[0].strip()] = h
     return bundles
+
+
+def read_test_bundles(root):
+    """{symbolic name: (headers, bundle dir)} of every test bundle under tests/ that has a manifest."""
+    out = {}
+    for mf in sorted((root / "tests").glob("*/META-INF/MANIFEST.MF")):
+        h = manifest_headers(mf.read_text(encoding="utf-8"))
+        out[h["Bundle-SymbolicName"].split(";")[0].strip()] = (h, mf.parent.parent)
+    return out
+
+
+def restricted_exports(bundles):
+    """{package: (owner, friends or None for x-internal)} of the packages exported as not API."""
+    out = {}
+    for name, h in bundles.items():
+        for c in clauses(h.get("Export-Package")):
+            pkg = c.split(";")[0].strip()
+            friends = re.search(r'x-friends:="([^"]*)"', c)
+            if friends:
+                out[pkg] = (name, {f.strip() for f in friends.group(1).split(",")})
+            elif "x-internal:=true" in c:
+                out[pkg] = (name, set())
+    return out
+
+
+IMPORT = re.compile(r"^import\s+(?:static\s+)?((?:[a-z_][\w]*\.)+)[A-Z]", re.M)
+
+
+def access_problems(restricted, users):
+    """users: [(importer symbolic name, java file)]; every import of a restricted package not allowed."""
+    problems = []
+    for importer, java in users:
+        for m in IMPORT.finditer(java.read_text(encoding="utf-8", errors="replace")):
+            pkg = m.group(1).rstrip(".")
+            if pkg in restricted:
+                owner, friends = restricted[pkg]
+                if owner != importer and importer not in friends:
+                    problems.append(f"{java}: {importer} uses {pkg}, which {owner} exports only to "
+                                    + (", ".join(sorted(friends)) if friends else "itself (x-internal)"))
+    return problems
+
+
+def users_of(root, bundles, test_bundles):
+    users = []
+    for mf in sorted((root / "bundles").glob("*/META-INF/MANIFEST.MF")):
+        name = manifest_headers(mf.read_text(encoding="utf-8"))["Bundle-SymbolicName"].split(";")[0].strip()
+        users += [(name, j) for j in sorted((mf.parent.parent / "src" / "main").rglob("*.java"))]
+    for name, (_, directory) in test_bundles.items():
+        users += [(name, j) for j in sorted((directory / "src").rglob("*.java"))]
+    return users
 
 
 def node(symbolic_name):
@@ -144,6 +197,21 @@ def self_test(doc, bundles):
     tampered[pure_name]["Require-Bundle"] = "org.eclipse.core.runtime," + bundles[pure_name].get("Require-Bundle", "")
     if not any("requires org.eclipse.core.runtime" in p for p in check(doc, tampered)):
         return "self-test: a pure-Java bundle requiring org.eclipse.core.runtime was accepted"
+    if restricted_exports_self_test():
+        return restricted_exports_self_test()
+    return None
+
+
+def restricted_exports_self_test():
+    import tempfile
+    with tempfile.TemporaryDirectory() as d:
+        java = Path(d) / "Uses.java"
+        java.write_text("package a;\nimport org.stagecraft.x.internal.Thing;\nimport org.stagecraft.y.Open;\n")
+        restricted = {"org.stagecraft.x.internal": ("org.stagecraft.x", {"org.stagecraft.x.tests"})}
+        if not access_problems(restricted, [("org.stagecraft.other", java)]):
+            return "self-test: a non-friend's use of an x-friends package was accepted"
+        if access_problems(restricted, [("org.stagecraft.x.tests", java)]):
+            return "self-test: a friend's use of an x-friends package was refused"
     return None
 
 
@@ -158,11 +226,13 @@ def main(argv):
             print(failure, file=sys.stderr)
             return 1
     problems = check(doc, bundles)
+    restricted = restricted_exports(bundles)
+    problems += access_problems(restricted, users_of(root, bundles, read_test_bundles(root)))
     for p in problems:
         print(f"docs/architecture.md disagrees with the bundles: {p}", file=sys.stderr)
     if not problems:
-        print(f"docs/architecture.md: bundle graph ({len(manifest_edges(bundles))} edges, {len(bundles)} bundles) "
-              "and the pure-Java rule agree with the manifests")
+        print(f"docs/architecture.md: bundle graph ({len(manifest_edges(bundles))} edges, {len(bundles)} bundles), "
+              "the pure-Java rule and the x-internal/x-friends exports agree with the manifests and the code")
     return 1 if problems else 0
 
 
