@@ -7,6 +7,8 @@ import java.util.Base64;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.codec.RawBody;
+import org.stagecraft.player.json.JsonFieldWriter;
+import org.stagecraft.player.json.JsonNumbers;
 import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.WireEvent;
@@ -16,7 +18,8 @@ import com.google.gson.stream.JsonWriter;
 /**
  * One JSON object per framed event: {@code t, conn, port, dir}, then the banner's {@code ident},
  * or the header fields and the decoded {@code body}, or an {@code error} with its stream
- * {@code offset}.
+ * {@code offset}. Numbers and bodies are written by {@link JsonFieldWriter} with
+ * {@link JsonNumbers#LOSSLESS} (NaN and infinities as strings, a float32 as the double it widens to).
  */
 public final class EventJson {
     private final PlayerDecoder decoder;
@@ -29,8 +32,7 @@ public final class EventJson {
         StringWriter text = new StringWriter(256);
         try (JsonWriter out = new JsonWriter(text)) {
             out.beginObject();
-            out.name("t");
-            JsonFields.number(out, e.t());
+            out.name("t").jsonValue(JsonNumbers.LOSSLESS.text(e.t()));
             out.name("conn").value(e.stream().conn());
             out.name("port").value(e.stream().port());
             out.name("dir").value(e.stream().dir().label());
@@ -62,17 +64,14 @@ public final class EventJson {
         out.name("index").value(h.index());
         out.name("type").value(h.type());
         out.name("subtype").value(h.subtype());
-        out.name("timestamp");
-        JsonFields.number(out, h.timestamp());
+        out.name("timestamp").jsonValue(JsonNumbers.LOSSLESS.text(h.timestamp()));
         out.name("seq").value(h.seqUnsigned());
         out.name("size").value(h.sizeUnsigned());
         out.name("body");
         if (m.body() instanceof RawBody raw) {
             out.value(Base64.getEncoder().encodeToString(raw.bytes()));
         } else {
-            out.beginObject();
-            m.body().describe(new JsonFields(out));
-            out.endObject();
+            out.jsonValue(JsonFieldWriter.object(m.body(), JsonNumbers.LOSSLESS));
         }
         if (m.hasProblem()) {
             out.name("error").value(m.problem().reason());

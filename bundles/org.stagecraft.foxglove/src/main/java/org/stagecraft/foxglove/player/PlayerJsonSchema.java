@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
+import org.stagecraft.player.json.JsonText;
 import org.stagecraft.player.codec.FieldVisitor;
 import org.stagecraft.player.codec.MessageBody;
 

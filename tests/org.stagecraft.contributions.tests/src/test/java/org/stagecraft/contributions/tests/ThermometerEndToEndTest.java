@@ -63,6 +63,7 @@ import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamMessage;
 import org.stagecraft.streams.StreamPattern;
 import org.stagecraft.streams.Subscription;
+import org.stagecraft.tests.support.Await;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.ui.launch.LaunchAttributes;
 import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;

@@ -24,6 +24,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.stagecraft.tests.support.Await;
 import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.session.RobotSession;

@@ -35,6 +35,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.stagecraft.spy.hold.HoldReason;
 import org.stagecraft.spy.hold.RobotHold;
+import org.stagecraft.tests.support.Await;
 import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.session.RobotSession;

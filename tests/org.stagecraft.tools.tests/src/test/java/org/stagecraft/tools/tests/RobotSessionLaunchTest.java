@@ -58,6 +58,7 @@ import org.stagecraft.recording.peers.RecordedConnection;
 import org.stagecraft.recording.peers.ReplayPeer;
 import org.stagecraft.spy.log.LogConnection;
 import org.stagecraft.spy.log.SpyLogReader;
+import org.stagecraft.tests.support.Await;
 import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.session.RobotSession;

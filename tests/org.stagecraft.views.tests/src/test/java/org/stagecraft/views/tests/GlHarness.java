@@ -6,6 +6,7 @@ import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.FillLayout;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Shell;
+import org.stagecraft.tests.support.UiWait;
 import org.stagecraft.views.FramePixels;
 import org.stagecraft.views.GlSurfaces;
 import org.stagecraft.views.RobotScene;
@@ -88,17 +89,7 @@ final class GlHarness implements AutoCloseable {
     }
 
     static void spinUntil(BooleanSupplier condition, long timeoutMillis, String what) {
-        Display d = Display.getCurrent();
-        long deadline = System.nanoTime() + timeoutMillis * 1_000_000L;
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                throw new AssertionError("timed out after " + timeoutMillis + " ms waiting for " + what);
-            }
-            if (!d.readAndDispatch()) {
-                d.timerExec(10, () -> { }); // wake the loop again soon: the condition may change off the UI thread
-                d.sleep();
-            }
-        }
+        UiWait.spinUntil(condition, timeoutMillis, what);
     }
 
     @Override

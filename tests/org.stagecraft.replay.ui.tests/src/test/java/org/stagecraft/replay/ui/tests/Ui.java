@@ -5,33 +5,20 @@ import java.util.function.BooleanSupplier;
 import org.eclipse.swt.widgets.Button;
 import org.eclipse.swt.widgets.Composite;
 import org.eclipse.swt.widgets.Control;
-import org.eclipse.swt.widgets.Display;
+import org.stagecraft.tests.support.UiWait;
 
-/** Waiting on the UI thread without sleeping: the display loop runs until a condition holds or a deadline passes. */
+/** Waiting on the UI thread without sleeping ({@link UiWait}, shared by the plug-in tests), and pressing buttons. */
 final class Ui {
     private Ui() {
     }
 
     static void spinUntil(BooleanSupplier condition, long timeoutMillis, String what) {
-        Display d = Display.getCurrent();
-        long deadline = System.nanoTime() + timeoutMillis * 1_000_000L;
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                throw new AssertionError("timed out after " + timeoutMillis + " ms waiting for " + what);
-            }
-            if (!d.readAndDispatch()) {
-                d.timerExec(10, () -> { }); // wake up soon: the condition may change on another thread
-                d.sleep();
-            }
-        }
+        UiWait.spinUntil(condition, timeoutMillis, what);
     }
 
     /** Runs pending UI events (async updates already queued). */
     static void drain() {
-        Display d = Display.getCurrent();
-        while (d.readAndDispatch()) {
-            // keep going
-        }
+        UiWait.drain();
     }
 
     /** The push button with this text under {@code root}, pressed as a click would. */
