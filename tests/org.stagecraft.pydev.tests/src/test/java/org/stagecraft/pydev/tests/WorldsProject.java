@@ -2,6 +2,7 @@ package org.stagecraft.pydev.tests;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.stream.Stream;
 
 import org.eclipse.core.resources.IProject;
@@ -53,6 +54,13 @@ final class WorldsProject {
         p.refreshLocal(IResource.DEPTH_INFINITE, new NullProgressMonitor());
         PythonNature.addNature(p, new NullProgressMonitor(), IPythonNature.Versions.PYTHON_VERSION_LATEST, "/" + name,
                 externalLibrary == null ? null : externalLibrary.toString(), IPythonNature.DEFAULT_INTERPRETER, null);
+        // PyDev restores a new project's modules in the background and, asked for the project's
+        // PYTHONPATH before that is done, waits one second and then launches nothing (a
+        // NullPointerException inside PythonRunnerConfig, seen on a loaded machine). A user creates
+        // a project long before running it; the tests launch at once, so they wait as long as PyDev needs.
+        PythonNature nature = PythonNature.getPythonNature(p);
+        Await.until("PyDev has restored the modules of " + name, Duration.ofSeconds(60),
+                () -> nature != null && nature.isOkToUse(), () -> "; nature: " + nature);
         return p;
     }
 }
