@@ -32,6 +32,7 @@ import org.stagecraft.spy.proxy.ConnectionInfo;
 import org.stagecraft.spy.proxy.SpyDiagnostic;
 import org.stagecraft.spy.proxy.SpyStreams;
 import org.stagecraft.streams.StreamMessage;
+import org.stagecraft.tests.support.Await;
 import org.stagecraft.tools.ui.foxglove.FoxgloveLive;
 import org.stagecraft.tools.ui.foxglove.FoxgloveLiveHandler;
 import org.stagecraft.tools.ui.foxglove.FoxgloveLivePreferences;
