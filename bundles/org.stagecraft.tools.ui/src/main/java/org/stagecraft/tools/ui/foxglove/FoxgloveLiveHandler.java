@@ -5,11 +5,9 @@ import java.util.Map;
 import org.eclipse.core.commands.AbstractHandler;
 import org.eclipse.core.commands.ExecutionEvent;
 import org.eclipse.core.commands.ExecutionException;
-import org.eclipse.swt.widgets.Display;
-import org.eclipse.ui.PlatformUI;
-import org.eclipse.ui.commands.ICommandService;
 import org.eclipse.ui.commands.IElementUpdater;
 import org.eclipse.ui.menus.UIElement;
+import org.stagecraft.tools.ui.CommandButtons;
 import org.osgi.service.prefs.BackingStoreException;
 
 /**
@@ -19,22 +17,7 @@ import org.osgi.service.prefs.BackingStoreException;
 public final class FoxgloveLiveHandler extends AbstractHandler implements IElementUpdater {
     public static final String COMMAND = "org.stagecraft.tools.ui.foxgloveLive";
 
-    private final Runnable refresh = () -> {
-        if (!PlatformUI.isWorkbenchRunning()) {
-            return;
-        }
-        Display d = PlatformUI.getWorkbench().getDisplay();
-        if (!d.isDisposed()) {
-            d.asyncExec(() -> {
-                if (PlatformUI.isWorkbenchRunning()) {
-                    ICommandService cs = PlatformUI.getWorkbench().getService(ICommandService.class);
-                    if (cs != null) {
-                        cs.refreshElements(COMMAND, null);
-                    }
-                }
-            });
-        }
-    };
+    private final Runnable refresh = CommandButtons.refresher(COMMAND);
 
     public FoxgloveLiveHandler() {
         FoxgloveLive.get().addListener(refresh);

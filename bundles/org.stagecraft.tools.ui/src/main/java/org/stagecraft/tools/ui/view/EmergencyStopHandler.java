@@ -4,11 +4,9 @@ import java.util.Map;
 
 import org.eclipse.core.commands.AbstractHandler;
 import org.eclipse.core.commands.ExecutionEvent;
-import org.eclipse.swt.widgets.Display;
-import org.eclipse.ui.PlatformUI;
-import org.eclipse.ui.commands.ICommandService;
 import org.eclipse.ui.commands.IElementUpdater;
 import org.eclipse.ui.menus.UIElement;
+import org.stagecraft.tools.ui.CommandButtons;
 import org.stagecraft.tools.ui.launch.EmergencyStop;
 
 /**
@@ -19,22 +17,7 @@ public final class EmergencyStopHandler extends AbstractHandler implements IElem
     public static final String COMMAND = "org.stagecraft.tools.ui.emergencyStop";
 
     /** The stop changes on other threads (a session starting, another button): buttons follow on the UI thread. */
-    private final Runnable refresh = () -> {
-        if (!PlatformUI.isWorkbenchRunning()) {
-            return;
-        }
-        Display d = PlatformUI.getWorkbench().getDisplay();
-        if (!d.isDisposed()) {
-            d.asyncExec(() -> {
-                if (PlatformUI.isWorkbenchRunning()) {
-                    ICommandService cs = PlatformUI.getWorkbench().getService(ICommandService.class);
-                    if (cs != null) {
-                        cs.refreshElements(COMMAND, null);
-                    }
-                }
-            });
-        }
-    };
+    private final Runnable refresh = CommandButtons.refresher(COMMAND);
 
     public EmergencyStopHandler() {
         EmergencyStop.get().addListener(refresh);
