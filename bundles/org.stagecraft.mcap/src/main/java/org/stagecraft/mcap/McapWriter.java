@@ -16,6 +16,7 @@ import java.util.TreeMap;
 import java.util.zip.CRC32;
 
 import com.github.luben.zstd.Zstd;
+import com.github.luben.zstd.ZstdCompressCtx;
 
 /**
  * Writes an MCAP file (https://mcap.dev, major version 0): header, metadata, schemas and channels,
@@ -62,6 +63,14 @@ public final class McapWriter implements AutoCloseable {
     // the open chunk and the definitions to write before it
     private final RecordBuffer definitions = new RecordBuffer(256);
     private final RecordBuffer chunk;
+    /**
+     * A finished chunk as written (definitions, chunk record, message indexes), compressed straight
+     * into it; kept from chunk to chunk with the zstd context, so that writing a chunk allocates
+     * nothing per chunk (it was the log's largest source of garbage).
+     */
+    private final RecordBuffer chunkOut;
+    private final CRC32 chunkCrc = new CRC32();
+    private ZstdCompressCtx zstd;
     private final Map<Integer, long[]> chunkIndex = new LinkedHashMap<>(); // channel -> [n, (time, offset)*]
     private long chunkStart = Long.MAX_VALUE;
     private long chunkEnd = Long.MIN_VALUE;
@@ -92,6 +101,7 @@ public final class McapWriter implements AutoCloseable {
         this.out = out;
         this.options = options;
         this.chunk = new RecordBuffer(Math.min(options.chunkSize(), 1 << 20) + 1024);
+        this.chunkOut = new RecordBuffer(Math.min(options.chunkSize(), 1 << 20) / 2);
         RecordBuffer b = new RecordBuffer(256);
         b.bytes(Mcap.MAGIC);
         int at = b.begin(Mcap.OP_HEADER);
@@ -252,6 +262,10 @@ public final class McapWriter implements AutoCloseable {
             finishChunk();
             writeEnd();
         } finally {
+            if (zstd != null) {
+                zstd.close();
+                zstd = null;
+            }
             out.close();
         }
     }
@@ -276,26 +290,29 @@ public final class McapWriter implements AutoCloseable {
         }
         byte[] raw = chunk.array();
         int rawLen = chunk.size();
-        CRC32 crc = new CRC32();
-        crc.update(raw, 0, rawLen);
-        byte[] packed;
-        try {
-            packed = new byte[(int) Zstd.compressBound(rawLen)];
-            long n = Zstd.compressByteArray(packed, 0, packed.length, raw, 0, rawLen, options.zstdLevel());
-            if (Zstd.isError(n)) {
-                throw new IOException("zstd compression failed: " + Zstd.getErrorName(n));
-            }
-            packed = Arrays.copyOf(packed, (int) n);
-        } catch (RuntimeException e) {
-            throw fail(new IOException("zstd compression failed: " + e.getMessage(), e));
-        } catch (IOException e) {
-            throw fail(e);
-        }
-        RecordBuffer b = new RecordBuffer(definitions.size() + packed.length + 128 + 32 * chunkIndex.size());
+        chunkCrc.reset();
+        chunkCrc.update(raw, 0, rawLen);
+        RecordBuffer b = chunkOut;
+        b.clear();
         b.bytes(definitions.array(), 0, definitions.size());
         long chunkOffset = position + b.size();
         int at = b.begin(Mcap.OP_CHUNK);
-        b.u64(chunkStart).u64(chunkEnd).u64(rawLen).u32(crc.getValue()).string("zstd").u64(packed.length).bytes(packed);
+        b.u64(chunkStart).u64(chunkEnd).u64(rawLen).u32(chunkCrc.getValue()).string("zstd");
+        int lengthAt = b.size();
+        b.u64(0);
+        int bound = (int) Zstd.compressBound(rawLen);
+        int dataAt = b.reserve(bound);
+        int packed;
+        try {
+            if (zstd == null) {
+                zstd = new ZstdCompressCtx().setLevel(options.zstdLevel());
+            }
+            packed = zstd.compressByteArray(b.array(), dataAt, bound, raw, 0, rawLen);
+        } catch (RuntimeException e) { // ZstdException: the message names zstd's error
+            throw fail(new IOException("zstd compression failed: " + e.getMessage(), e));
+        }
+        b.truncate(dataAt + packed);
+        b.putU64(lengthAt, packed);
         b.end(at);
         long chunkLength = position + b.size() - chunkOffset;
         Map<Integer, Long> indexOffsets = new LinkedHashMap<>();
@@ -313,7 +330,7 @@ public final class McapWriter implements AutoCloseable {
             b.end(rec);
         }
         ChunkIndexEntry ci = new ChunkIndexEntry(chunkStart, chunkEnd, chunkOffset, chunkLength, indexOffsets,
-                position + b.size() - indexStart, packed.length, rawLen);
+                position + b.size() - indexStart, packed, rawLen);
         emit(b);
         chunkIndexes.add(ci);
         lastComplete = position;

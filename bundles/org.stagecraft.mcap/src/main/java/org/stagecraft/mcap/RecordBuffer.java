@@ -78,6 +78,22 @@ public final class RecordBuffer {
         return bytes(b, 0, b.length);
     }
 
+    /** Makes room for {@code len} bytes written later into {@link #array()} at the returned position. */
+    public int reserve(int len) {
+        room(len);
+        int at = n;
+        n += len;
+        return at;
+    }
+
+    /** Cuts the buffer back to {@code size} bytes (e.g. after a {@link #reserve} that was not used up). */
+    public void truncate(int size) {
+        if (size < 0 || size > n) {
+            throw new IllegalArgumentException("size " + size + " of " + n);
+        }
+        n = size;
+    }
+
     public RecordBuffer string(String s) {
         byte[] b = s.getBytes(StandardCharsets.UTF_8);
         u32(b.length);

@@ -56,20 +56,30 @@ final class BusSubscription implements Subscription {
 
     /** Called by publishers: buffer (or drop and count) and make sure a drain task is pending. */
     void offer(StreamMessage m) {
+        if (buffer(m)) {
+            schedule();
+        }
+    }
+
+    /**
+     * Buffers {@code m} (or drops and counts it) without scheduling the drain task; the caller must
+     * {@link #schedule()} afterwards when this returns true ({@link StreamBus#publishAll}).
+     */
+    boolean buffer(StreamMessage m) {
         if (closed) {
-            return;
+            return false;
         }
         if (lossless) {
             if (size.incrementAndGet() > capacity) {
                 size.decrementAndGet();
                 dropped.increment();
-                return;
+                return false;
             }
             fifo.offer(m);
         } else if (latest.put(m.key(), m) != null) {
             dropped.increment(); // superseded before delivery
         }
-        schedule();
+        return true;
     }
 
     /** Called by {@link StreamBus#release}: buffers the release behind the messages offered before it. */
@@ -109,7 +119,8 @@ final class BusSubscription implements Subscription {
         return lossless ? 0 : releases.size();
     }
 
-    private void schedule() {
+    /** Makes sure a drain task is pending. */
+    void schedule() {
         if (scheduled.compareAndSet(false, true)) {
             submit();
         }

@@ -101,6 +101,45 @@ public final class StreamBus implements AutoCloseable {
     }
 
     /**
+     * Offers {@code messages}, in order, as {@link #publish} would one by one, but hands each
+     * subscription at most one drain task for all of them: a publisher with many messages at once
+     * (the spy's observation thread, once per round) wakes each consumer once instead of once per
+     * message. Never blocks.
+     */
+    public void publishAll(List<StreamMessage> messages) {
+        if (closed || messages.isEmpty()) {
+            return;
+        }
+        published.add(messages.size());
+        List<BusSubscription> due = new ArrayList<>(4);
+        for (StreamMessage m : messages) {
+            StreamKey key = m.key();
+            ConcurrentHashMap<StreamKey, BusSubscription[]> table = routes;
+            BusSubscription[] route = table.get(key);
+            if (route == null) {
+                route = learn(key, table);
+            }
+            for (BusSubscription s : route) {
+                if (s.buffer(m) && !contains(due, s)) {
+                    due.add(s);
+                }
+            }
+        }
+        for (BusSubscription s : due) {
+            s.schedule();
+        }
+    }
+
+    private static boolean contains(List<BusSubscription> list, BusSubscription s) {
+        for (BusSubscription x : list) {
+            if (x == s) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
      * Subscribes {@code consumer} to every stream, present or future, matching {@code pattern}.
      *
      * @throws IllegalStateException if the bus is closed

@@ -14,7 +14,7 @@ import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.SpyLogWriter;
 
 /**
- * Records what the spy observes into an MCAP spy log, on a thread of its own ("stagecraft-spy-log"):
+ * Records what the spy observes into an MCAP spy log, on a thread of its own ("spy-log"):
  * the observation thread only hands the entries over, so encoding, zstd and the file's CRCs and
  * writes run beside publishing instead of after it (they were more than half of the observation
  * thread's time).
@@ -71,7 +71,7 @@ public final class LogRecorder implements SpyRecorder {
 
     public LogRecorder(SpyLogWriter writer) {
         this.writer = writer;
-        this.thread = Thread.ofPlatform().daemon().name("stagecraft-spy-log").start(this::work);
+        this.thread = Thread.ofPlatform().daemon().name("spy-log").start(this::work);
     }
 
     public SpyLogWriter writer() {

@@ -8,12 +8,17 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import java.time.Duration;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.LockSupport;
+import java.util.concurrent.locks.ReentrantLock;
 
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.PlayerDecoder;
@@ -41,7 +46,18 @@ import org.stagecraft.streams.StreamMessage;
  *
  * <p><b>On the observation thread</b>: publishing on the stream bus and recording to the spy log,
  * one thread, in the order the events were queued (which is the stream order per connection and
- * direction).
+ * direction). It works in rounds: it takes everything queued, publishes it to the bus in one
+ * {@link StreamBus#publishAll} (one hand-over per subscription per round, not per message) and
+ * sleeps until the next tick ({@value #TICK_MILLIS} ms) unless {@value #WAKE_BYTES} bytes or a
+ * waiting forwarding thread wake it earlier. At a robot's rates this is what costs: waking a thread
+ * per message cost more CPU than framing, decoding, publishing and logging it.
+ *
+ * <p><b>Complete observation</b> ({@link #observationWait(Duration)}): when the queue has no room
+ * for a chunk, the forwarding thread waits — after the chunk went out, before its next read — while
+ * observation is making progress, so a burst faster than observation is slowed to observation's pace
+ * by TCP's own flow control instead of being left out of the log. The wire never waits for a part
+ * that is stuck (a hung disk, a bug): once observation has made no progress for the wait limit, the
+ * chunk is dropped from observation as before, and no chunk waits again until observation moves.
  *
  * <p>Memory is bounded in total, not per message: queued events plus unfinished messages held by
  * the framers stay within {@code maxQueuedBytes} (the framers may hold half of it). Past that,
@@ -134,8 +150,27 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private final PlayerDecoder decoder;
     private final long maxQueuedBytes;
     private final long maxHeldBytes;
-    private final LinkedBlockingQueue<Item> queue = new LinkedBlockingQueue<>();
+    /** Default {@link #observationWait(Duration)}: long enough for a log's fsync, short for a hung disk. */
+    public static final Duration DEFAULT_OBSERVATION_WAIT = Duration.ofSeconds(1);
+    /** How long the observation thread sleeps between rounds when nothing wakes it. */
+    static final long TICK_MILLIS = 5;
+    /** Queued bytes that wake the observation thread before its tick. */
+    static final long WAKE_BYTES = 256 << 10;
+
+    private final ConcurrentLinkedQueue<Item> queue = new ConcurrentLinkedQueue<>();
+    /** The observation thread is between rounds (parked until its tick or a wake-up). */
+    private volatile boolean idle;
     private final AtomicLong queuedBytes = new AtomicLong();
+    /** Bytes of queued events the observation thread has finished with: its progress, for waiting forwarders. */
+    private final AtomicLong observedProgress = new AtomicLong();
+    private final ReentrantLock roomLock = new ReentrantLock();
+    private final Condition room = roomLock.newCondition();
+    private final AtomicInteger waiting = new AtomicInteger();
+    /** Observation made no progress for the wait limit: chunks are dropped without waiting until it moves. */
+    private volatile boolean stalled;
+    private volatile long observationWaitNanos = DEFAULT_OBSERVATION_WAIT.toNanos();
+    private final LongAdder waitNanos = new LongAdder();
+    private final LongAdder stalls = new LongAdder();
     private final AtomicLong heldBytes = new AtomicLong();
     private final Map<StreamRef, Stream> streams = new ConcurrentHashMap<>();
     private final Map<Integer, Inflow> inflows = new ConcurrentHashMap<>();
@@ -159,6 +194,8 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private volatile String recorderError;
     private long lastFlushNanos = System.nanoTime();
     private final Set<ConnectionInfo> openConnections = new LinkedHashSet<>();
+    /** What this round publishes, in order; handed to the bus at the end of the round (or before a release). */
+    private final List<StreamMessage> outbox = new ArrayList<>(512);
     private final Map<Integer, MessageKeys> messageKeys = new HashMap<>();
 
     /**
@@ -177,7 +214,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         } catch (Throwable t) {
             // Best effort: a class that did not load now fails later, where it is reported and counted.
         }
-        this.worker = Thread.ofPlatform().daemon().name("stagecraft-spy-observer").start(this::work);
+        this.worker = Thread.ofPlatform().daemon().name("spy-observer").start(this::work);
     }
 
     /** Hears failures of observation ({@link SpyNotice.Kind#OBSERVATION_FAILED}) as they happen. */
@@ -190,12 +227,22 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         listeners.remove(l);
     }
 
+    /**
+     * How long a forwarding thread may wait for room in the queue while observation makes no
+     * progress ({@link #DEFAULT_OBSERVATION_WAIT}); {@link Duration#ZERO} never waits: what does not
+     * fit is dropped from observation at once (best effort, the wire never slowed).
+     */
+    public ObservationPipeline observationWait(Duration limit) {
+        this.observationWaitNanos = Math.max(0, limit.toNanos());
+        return this;
+    }
+
     // ---- called on forwarding threads ------------------------------------------------------------
 
     @Override
     public void opened(ConnectionInfo connection, long timeNanos) {
         inflows.computeIfAbsent(connection.id(), k -> new Inflow());
-        queue.add(new Opened(connection, timeNanos));
+        enqueue(new Opened(connection, timeNanos));
     }
 
     @Override
@@ -213,8 +260,10 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         StreamRef ref = new StreamRef(connection.id(), dir);
         Stream s = streams.computeIfAbsent(ref,
                 k -> new Stream(connection, dir, inflows.computeIfAbsent(connection.id(), i -> new Inflow())));
+        long reserved = reserve(s.inflow, len);
         synchronized (s) {
             if (s.done || closing) {
+                unreserve(s.inflow, reserved);
                 droppedBytes.add(len);
                 return;
             }
@@ -223,13 +272,14 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             try {
                 s.framer.accept(data, off, len);
             } catch (Throwable t) {
+                unreserve(s.inflow, reserved);
                 s.out.clear();
                 droppedBytes.add(len);
                 restartFraming(s, before, t);
                 publishHeld(s);
                 return;
             }
-            emit(s, timeNanos);
+            emit(s, timeNanos, reserved);
         }
         if (heldBytes.get() > maxHeldBytes) {
             giveUpLargest(timeNanos);
@@ -238,6 +288,16 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
 
     /** Decodes and queues what the stream's framer produced; under the stream's lock. */
     private void emit(Stream s, long t) {
+        emit(s, t, 0);
+    }
+
+    /**
+     * As {@link #emit(Stream, long)}, with {@code reserved} bytes of room already taken for this
+     * chunk ({@link #reserve}): the events are queued whatever their size (a message completed now
+     * moves its earlier bytes from the framer's holdings to the queue, so the total stays bounded),
+     * and the reservation is settled against what was queued.
+     */
+    private void emit(Stream s, long t, long reserved) {
         publishHeld(s);
         long abandoned = s.framer.abandonedBytes();
         if (abandoned != s.abandonedSeen) {
@@ -245,6 +305,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             s.abandonedSeen = abandoned;
         }
         if (s.out.isEmpty()) {
+            unreserve(s.inflow, reserved);
             return;
         }
         WireEvent[] events = s.out.toArray(WireEvent[]::new);
@@ -253,7 +314,9 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         for (WireEvent e : events) {
             bytes += size(e);
         }
-        if (!admit(s.inflow, bytes)) {
+        if (reserved > 0) {
+            settle(s.inflow, reserved, bytes);
+        } else if (!admit(s.inflow, bytes)) {
             if (s.lostAt < 0) {
                 s.lostAt = events[0].offset();
             }
@@ -275,9 +338,116 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             failure(s.connection, s.dir, events[0].offset(), "decoding failed", e, t);
             return;
         }
-        queue.add(new Batch(s.connection, s.dir, events, decoded, t, bytes, s.lost, s.lostAt, s.inflow));
+        enqueue(new Batch(s.connection, s.dir, events, decoded, t, bytes, s.lost, s.lostAt, s.inflow));
         s.lost = 0;
         s.lostAt = -1;
+    }
+
+    /**
+     * Takes room for a chunk of {@code n} bytes before it is framed, waiting on the forwarding
+     * thread — after the chunk went out, before the next read — while the queue is full and
+     * observation makes progress. Returns the bytes taken: {@code n}, or 0 when observation is
+     * best-effort ({@link #observationWait} zero), closing, or stalled (no progress for the wait
+     * limit: then {@link #admit} decides afterwards, and what does not fit is dropped).
+     */
+    private long reserve(Inflow inflow, long n) {
+        long limit = observationWaitNanos;
+        if (limit <= 0 || closing || dead != null) {
+            return 0;
+        }
+        if (take(inflow, n)) {
+            return n;
+        }
+        if (stalled) {
+            return 0;
+        }
+        long start = System.nanoTime();
+        long progress = observedProgress.get();
+        long lastMove = start;
+        waiting.incrementAndGet();
+        roomLock.lock();
+        try {
+            wake();
+            while (!closing && dead == null && !stalled) {
+                if (take(inflow, n)) {
+                    return n;
+                }
+                long now = System.nanoTime();
+                long p = observedProgress.get();
+                if (p != progress) {
+                    progress = p;
+                    lastMove = now;
+                } else if (now - lastMove >= limit) {
+                    stalled = true;
+                    stalls.increment();
+                    break;
+                }
+                room.awaitNanos(Math.min(limit - (now - lastMove), TimeUnit.MILLISECONDS.toNanos(TICK_MILLIS)));
+            }
+            return 0;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 0;
+        } finally {
+            roomLock.unlock();
+            waiting.decrementAndGet();
+            waitNanos.add(System.nanoTime() - start);
+        }
+    }
+
+    /** Takes {@code n} bytes of room if {@link #admit} would (an empty queue always has room for one chunk). */
+    private boolean take(Inflow inflow, long n) {
+        if (queuedBytes.get() == 0 && heldBytes.get() + n <= maxQueuedBytes) {
+            queuedBytes.addAndGet(n);
+            inflow.queued.addAndGet(n);
+            return true;
+        }
+        return admit(inflow, n);
+    }
+
+    private void unreserve(Inflow inflow, long reserved) {
+        if (reserved > 0) {
+            release(inflow, reserved);
+            signalRoom();
+        }
+    }
+
+    /** Turns a reservation of {@code reserved} bytes into the {@code bytes} actually queued. */
+    private void settle(Inflow inflow, long reserved, long bytes) {
+        if (bytes != reserved) {
+            queuedBytes.addAndGet(bytes - reserved);
+            inflow.queued.addAndGet(bytes - reserved);
+        }
+    }
+
+    /** Called by the observation thread when it has released queued bytes: progress for waiting forwarders. */
+    private void madeProgress(long bytes) {
+        observedProgress.addAndGet(bytes);
+        stalled = false;
+    }
+
+    private void signalRoom() {
+        if (waiting.get() > 0) {
+            roomLock.lock();
+            try {
+                room.signalAll();
+            } finally {
+                roomLock.unlock();
+            }
+        }
+    }
+
+    private void enqueue(Item item) {
+        queue.add(item);
+        if (idle && (item instanceof Stop || queuedBytes.get() >= WAKE_BYTES)) {
+            LockSupport.unpark(worker);
+        }
+    }
+
+    private void wake() {
+        if (idle) {
+            LockSupport.unpark(worker);
+        }
     }
 
     /**
@@ -335,7 +505,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 }
                 abandonedMessages.increment();
                 emit(largest, t);
-                queue.add(new Abandoned(largest.connection, largest.dir, offset, size, received, t));
+                enqueue(new Abandoned(largest.connection, largest.dir, offset, size, received, t));
             }
         }
     }
@@ -354,7 +524,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     /** Recorded in the log and published as a {@link SpyDiagnostic} of the server-to-client stream, at offset 0. */
     @Override
     public void notice(SpyNotice notice, long timeNanos) {
-        queue.add(new Noticed(notice.connection(), notice, timeNanos));
+        enqueue(new Noticed(notice.connection(), notice, timeNanos));
     }
 
     /** Both directions have ended: the framers report what they left unfinished, then the close is queued. */
@@ -380,23 +550,23 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 heldBytes.addAndGet(-s.held);
                 s.held = 0;
                 if (s.lost > 0) {
-                    queue.add(new Batch(connection, d, new WireEvent[0], new DecodedMessage[0], timeNanos, 0, s.lost,
+                    enqueue(new Batch(connection, d, new WireEvent[0], new DecodedMessage[0], timeNanos, 0, s.lost,
                             s.lostAt, s.inflow));
                 }
             }
         }
-        queue.add(new Closed(connection, timeNanos, reason));
+        enqueue(new Closed(connection, timeNanos, reason));
     }
 
     /** Never dropped like chunks: they are few and the log must rebuild what Player received. */
     @Override
     public void holdAction(HoldAction action, long timeNanos) {
-        queue.add(new HoldDone(action, timeNanos));
+        enqueue(new HoldDone(action, timeNanos));
     }
 
     @Override
     public void holdState(HoldState state, long timeNanos) {
-        queue.add(new HoldChanged(state, timeNanos));
+        enqueue(new HoldChanged(state, timeNanos));
     }
 
     // ---- status --------------------------------------------------------------------------------
@@ -419,6 +589,16 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
      */
     public long droppedBytes() {
         return droppedBytes.sum();
+    }
+
+    /** How long forwarding threads waited in all for observation to make room (complete observation). */
+    public Duration waitedForObservation() {
+        return Duration.ofNanos(waitNanos.sum());
+    }
+
+    /** How often observation made no progress for the wait limit, so that chunks were dropped instead. */
+    public long stalls() {
+        return stalls.sum();
     }
 
     /** Unfinished messages whose observation was given up to keep memory bounded. */
@@ -450,7 +630,8 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     @Override
     public void close() throws InterruptedException {
         closing = true;
-        queue.add(new Stop());
+        signalRoom();
+        enqueue(new Stop());
         worker.join();
     }
 
@@ -465,7 +646,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         String text = "observation failed on connection " + c.id() + (c.client().isEmpty() ? "" : " from " + c.client())
                 + " (" + what + ": " + describe(t) + "); forwarding goes on, the bytes concerned are counted as unobserved";
         report(c, text);
-        queue.add(new Failed(c, dir, offset, text, time));
+        enqueue(new Failed(c, dir, offset, text, time));
     }
 
     private void report(ConnectionInfo c, String text) {
@@ -511,25 +692,41 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         }
     }
 
-    private void loop() throws InterruptedException {
-        List<Item> items = new ArrayList<>(256);
+    private void loop() {
         while (true) {
-            Item first = queue.poll(1, TimeUnit.SECONDS);
-            if (first != null) {
-                items.add(first);
-                queue.drainTo(items, 255);
-            }
-            for (Item item : items) {
+            int n = 0;
+            for (Item item = queue.poll(); item != null; item = queue.poll()) {
                 if (item instanceof Stop) {
-                    items.clear();
+                    sendOutbox();
                     return;
                 }
                 handleSafely(item);
+                if (++n % 256 == 0) {
+                    sendOutbox();
+                    signalRoom();
+                }
             }
-            items.clear();
+            sendOutbox();
+            signalRoom();
             if (System.nanoTime() - lastFlushNanos > 1_000_000_000L) {
                 lastFlushNanos = System.nanoTime();
                 recordQuietly(r -> r.flush());
+            }
+            idle = true;
+            if (queue.isEmpty()) { // a producer that saw idle == false queued before this check
+                LockSupport.parkNanos(this, TimeUnit.MILLISECONDS.toNanos(TICK_MILLIS));
+            }
+            idle = false;
+        }
+    }
+
+    /** Hands this round's messages to the bus, in order. */
+    private void sendOutbox() {
+        if (!outbox.isEmpty()) {
+            try {
+                bus.publishAll(outbox);
+            } finally {
+                outbox.clear();
             }
         }
     }
@@ -572,6 +769,11 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 droppedBytes.add(b.bytes());
             }
         }
+        try {
+            sendOutbox();
+        } catch (Throwable t) {
+            outbox.clear();
+        }
     }
 
     private void handleSafely(Item item) {
@@ -581,6 +783,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             if (item instanceof Batch b) {
                 droppedBytes.add(b.bytes());
                 release(b.inflow(), b.bytes());
+                madeProgress(b.bytes());
                 failure(b.connection(), b.dir(), b.events().length > 0 ? b.events()[0].offset() : 0,
                         "publishing or recording failed", t, b.t());
             } else {
@@ -606,6 +809,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                     event(b.connection(), b.dir(), events[i], b.decoded()[i], b.t());
                 }
                 release(b.inflow(), b.bytes());
+                madeProgress(b.bytes());
             }
             case Abandoned a -> diagnostic(a.connection(), a.dir(), a.offset(), String.format(Locale.ROOT,
                     "observation of the %d-byte message at offset %d was given up after %d bytes of it: unfinished"
@@ -619,17 +823,18 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 messageKeys.remove(cl.connection().id());
                 inflows.remove(cl.connection().id());
                 record(r -> r.closed(cl.connection(), cl.t(), cl.reason()));
+                sendOutbox(); // the connection's last messages reach the bus before its release
                 bus.release(cl.connection().client()); // its streams end here: the bus forgets them (issue 17)
             }
             case HoldDone h -> {
                 record(r -> r.hold(h.action().toEntry(h.t())));
-                bus.publish(new StreamMessage(HoldStreams.actionKey(h.action()), h.t(), h.action()));
+                outbox.add(new StreamMessage(HoldStreams.actionKey(h.action()), h.t(), h.action()));
             }
             case HoldChanged h -> {
                 HoldState s = h.state();
                 record(r -> r.hold(new HoldEntry(h.t(), 0, 0, s.held() ? HoldEntry.Action.HOLD_ON : HoldEntry.Action.HOLD_OFF,
                         0, 0, null, s.description())));
-                bus.publish(new StreamMessage(HoldStreams.STATE, h.t(), s));
+                outbox.add(new StreamMessage(HoldStreams.STATE, h.t(), s));
             }
             case Stop s -> {
                 // handled by the loop
@@ -653,8 +858,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                     keys = new MessageKeys(c);
                     messageKeys.put(c.id(), keys);
                 }
-                bus.publish(new StreamMessage(keys.of(dir, h), t,
-                        new SpyMessage(c, dir, f.offset(), m)));
+                outbox.add(new StreamMessage(keys.of(dir, h), t, new SpyMessage(c, dir, f.offset(), m)));
                 if (m.hasProblem()) {
                     decodeProblems.increment();
                     diagnostic(c, dir, f.offset() + MessageHeader.SIZE + Math.max(0, m.problem().payloadOffset()),
@@ -682,7 +886,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     }
 
     private void diagnosticOnBus(ConnectionInfo c, Direction dir, long offset, String text, long t) {
-        bus.publish(new StreamMessage(SpyStreams.diagnosticKey(c, dir), t, new SpyDiagnostic(c, dir, offset, text)));
+        outbox.add(new StreamMessage(SpyStreams.diagnosticKey(c, dir), t, new SpyDiagnostic(c, dir, offset, text)));
     }
 
     @FunctionalInterface

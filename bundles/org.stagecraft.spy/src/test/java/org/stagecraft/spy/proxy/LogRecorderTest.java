@@ -104,7 +104,7 @@ class LogRecorderTest {
         r.closed(CONN, 10_000, "done");
         r.close();
 
-        assertTrue(ch.writers.contains("stagecraft-spy-log"), ch.writers.toString());
+        assertTrue(ch.writers.contains("spy-log"), ch.writers.toString());
         assertTrue(!ch.writers.contains(caller), "the caller does not write the file: " + ch.writers);
         try (SpyLogReader in = SpyLogReader.open(log)) {
             for (Direction d : Direction.values()) {

@@ -83,7 +83,7 @@ public final class ObservationBench {
             while (pipeline.heldBytes() > 0) { // every connection is closed: all its events are queued
                 Thread.onSpinWait();
             }
-            long observer = threadCpu(threads, "stagecraft-spy-observer");
+            long observer = threadCpu(threads, "spy-observer");
             pipeline.close();
             double s = (System.nanoTime() - t0) / 1e9;
             long n = pipeline.messages();

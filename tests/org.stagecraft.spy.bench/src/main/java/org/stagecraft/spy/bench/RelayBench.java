@@ -41,14 +41,15 @@ import org.stagecraft.recording.peers.ReplayPeer;
  * wrong relay fails instead of winning.
  *
  * <pre>java -jar spy-bench.jar [--sessions 6] [--clients 4] [--repeat 16] [--rounds 2] [--pings 5000]
- *     [--pace-seconds 15] [--bus 0]</pre>
+ *     [--pace-seconds 15] [--bus 0] [--paced 1] [--full 1] [--others 1]</pre>
+ * ({@code --paced 0} or {@code --full 0} leaves a phase out, {@code --others 0} runs the full spy alone.)
  */
 public final class RelayBench {
     private RelayBench() {
     }
 
     private record RunResult(double bytesPerSecond, double[] idleRtts, double[] loadedRtts, double cpuMicrosPerMessage,
-            long unobserved, double peakRssMb) {
+            long unobserved, double peakRssMb, String cpuByThread) {
     }
 
     private enum Phase {
@@ -64,6 +65,7 @@ public final class RelayBench {
     public static void main(String[] args) throws Exception {
         Map<String, Integer> opt = new LinkedHashMap<>(Map.of("sessions", 6, "clients", 4, "repeat", 16, "rounds", 2,
                 "pings", 5000, "pace-seconds", 15, "bus", 0));
+        opt.putAll(Map.of("paced", 1, "full", 1, "others", 1));
         for (int i = 0; i + 1 < args.length; i += 2) {
             String k = args[i].replaceFirst("^--", "");
             if (!opt.containsKey(k)) {
@@ -85,8 +87,9 @@ public final class RelayBench {
                 + " (both directions), as fast as the peers can%n", opt.get("sessions"), clients, opt.get("sessions") * clients,
                 fullMessages, w.bytes() * clients / 1e6);
         Path logDir = Files.createTempDirectory("stagecraft-bench");
-        List<Relay> relays = new ArrayList<>(List.of(new DirectConnection(), new SocatRelay(),
-                new SpyRelay(logDir, SpyServer.Depth.RELAY)));
+        // --others 0: the full spy alone (profiling); --paced 0 / --full 0: one phase only
+        List<Relay> relays = new ArrayList<>(opt.get("others") == 0 ? List.of() : List.of(new DirectConnection(),
+                new SocatRelay(), new SpyRelay(logDir, SpyServer.Depth.RELAY)));
         if (opt.get("bus") != 0) {
             relays.add(new SpyRelay(logDir, SpyServer.Depth.BUS));
         }
@@ -94,6 +97,9 @@ public final class RelayBench {
         Map<Phase, Map<String, List<RunResult>>> results = new LinkedHashMap<>();
         for (int round = 0; round < opt.get("rounds"); round++) {
             for (Phase phase : Phase.values()) {
+                if (opt.get(phase == Phase.PACED ? "paced" : "full") == 0) {
+                    continue;
+                }
                 for (int k = 0; k < relays.size(); k++) {
                     Relay relay = relays.get((k + round) % relays.size()); // rotate so no relay always runs first
                     RunResult r = phase == Phase.PACED ? runPaced(relay, paced, w, pacedMessages)
@@ -102,11 +108,14 @@ public final class RelayBench {
                             .computeIfAbsent(relay.name(), x -> new ArrayList<>()).add(r);
                     System.out.printf("  round %d %-13s %-20s %8.1f MB/s %7.2f µs CPU/msg  %s%n", round + 1, phase.label,
                             relay.name(), r.bytesPerSecond() / 1e6, r.cpuMicrosPerMessage(), relay.report());
+                    if (!r.cpuByThread().isEmpty()) {
+                        System.out.printf("          CPU per message by thread: %s%n", r.cpuByThread());
+                    }
                 }
             }
         }
         Files.deleteIfExists(logDir);
-        for (Phase phase : Phase.values()) {
+        for (Phase phase : results.keySet()) {
             report(phase, results.get(phase));
         }
     }
@@ -115,6 +124,7 @@ public final class RelayBench {
     private static RunResult runPaced(Relay relay, List<TimedSession> sessions, Workload w, long sessionMessages) throws Exception {
         double cpu;
         double rss;
+        Map<String, Double> threads;
         double[] rtts;
         int pings;
         long t0;
@@ -132,6 +142,7 @@ public final class RelayBench {
             }
             InetSocketAddress pingAt = fronts.get(fronts.size() - 1);
             double cpu0 = ProcStat.cpuSeconds(relay.pids());
+            var threads0 = ProcStat.cpuSecondsByThread(relay.pids());
             AtomicBoolean running = new AtomicBoolean(true);
             Future<PingProbe.Rtts> probe = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().factory())
                     .submit(() -> PingProbe.run(pingAt, w, 1_000_000, running::get, 10_000_000L));
@@ -154,16 +165,20 @@ public final class RelayBench {
             pings = r.pings();
             players.verifyServed(sessions.size());
             cpu = ProcStat.cpuSeconds(relay.pids()) - cpu0;
+            threads = ProcStat.cpuSecondsByThread(relay.pids());
+            threads.replaceAll((k, v) -> v - threads0.getOrDefault(k, 0.0));
             rss = ProcStat.peakRssMb(relay.pids());
         }
         long bytes = sessions.stream().mapToLong(TimedSession::totalBytes).sum();
         long messages = sessionMessages + 2L * pings;
-        return new RunResult(bytes / (elapsed / 1e9), rtts, rtts, cpu * 1e6 / messages, relay.unobservedBytes(), rss);
+        return new RunResult(bytes / (elapsed / 1e9), rtts, rtts, cpu * 1e6 / messages, relay.unobservedBytes(), rss,
+                ProcStat.cpuSpent(threads, cpu, messages));
     }
 
     private static RunResult runFull(Relay relay, Workload w, int clients, int pings, long loadMessages) throws Exception {
         double cpu;
         double rss;
+        Map<String, Double> threads;
         double[] idle;
         double[] busy;
         int busyPings;
@@ -191,6 +206,7 @@ public final class RelayBench {
             Future<PingProbe.Rtts> underLoad = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().factory())
                     .submit(() -> PingProbe.run(pingAt, w, 1_000_000, loaded::get));
             double cpu0 = ProcStat.cpuSeconds(relay.pids());
+            var threads0 = ProcStat.cpuSecondsByThread(relay.pids());
             long t0 = System.nanoTime();
             go.countDown();
             for (Future<ReplayPeer.Result> p : programs) {
@@ -207,11 +223,13 @@ public final class RelayBench {
             busyPings = b.pings();
             players.verifyServed(programs.size());
             cpu = ProcStat.cpuSeconds(relay.pids()) - cpu0;
+            threads = ProcStat.cpuSecondsByThread(relay.pids());
+            threads.replaceAll((k, v) -> v - threads0.getOrDefault(k, 0.0));
             rss = ProcStat.peakRssMb(relay.pids());
         }
         long messages = loadMessages + 2L * busyPings;
         return new RunResult(w.bytes() * clients / (elapsed / 1e9), idle, busy, cpu * 1e6 / messages, relay.unobservedBytes(),
-                rss);
+                rss, ProcStat.cpuSpent(threads, cpu, messages));
     }
 
     /**

@@ -48,6 +48,10 @@ final class SpyRelay implements Relay {
         process = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT).start();
         out = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
         String ready = out.readLine();
+        while (ready != null && !ready.startsWith("ready") && ready.startsWith("[")) {
+            System.err.println(ready); // the JVM's own lines (e.g. -XX:StartFlightRecording's) come first
+            ready = out.readLine();
+        }
         if (ready == null || !ready.startsWith("ready")) {
             throw new IOException("the spy process did not start: " + ready);
         }
