@@ -43,7 +43,6 @@ import org.stagecraft.streams.StreamMessage;
 final class SpyCommand {
     static final String USAGE = "usage: stagecraft spy --listen [HOST:]PORT --to HOST:PORT [--listen ... --to ...]"
             + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS] [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]]";
-    private static final long OBSERVER_QUEUE_BYTES = 64L << 20;
 
     /** The live view's converter: the export's channels (Foxglove's schemas, and Player's own messages decoded). */
     static final Function<FoxgloveSink, Consumer<StreamMessage>> FOXGLOVE_SCENE = LiveScene.converter();
@@ -162,7 +161,7 @@ final class SpyCommand {
                 : new Live(foxglove, BusRelay.start(bus, foxglove, liveConverter, BusRelay.DEFAULT_CAPACITY));
         // with a live view, the recorder hook also tells it when a connection has ended
         ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()),
-                live != null ? new EndOfConnections(recorder, bus) : recorder, OBSERVER_QUEUE_BYTES);
+                live != null ? new EndOfConnections(recorder, bus) : recorder, ObservationPipeline.DEFAULT_MAX_QUEUED_BYTES);
         pipeline.addListener(say);
         spy.observer(pipeline);
         try {

@@ -95,7 +95,7 @@ public final class McapWriter implements AutoCloseable {
     /**
      * Starts a file on any channel (the writer owns it and closes it): magic and header. When the
      * channel is a {@link SeekableByteChannel}, a failed write cuts it back to the last complete chunk;
-     * when it is a {@link FileChannel}, {@link #flush()} also forces it to the device.
+     * when it is a {@link FileChannel}, {@link #force()} forces it to the device (and {@link #close()} does).
      */
     public McapWriter(WritableByteChannel out, Options options) throws IOException {
         this.out = out;
@@ -235,15 +235,27 @@ public final class McapWriter implements AutoCloseable {
         return messageCount;
     }
 
-    /** Writes the open chunk, so that every message so far is in the file, and forces a file to disk. */
+    /**
+     * Writes the open chunk, so that every message so far is in the file (and survives the process
+     * being killed); {@link #force()} puts it on the device.
+     */
     public synchronized void flush() throws IOException {
         check();
         finishChunk();
-        if (out instanceof FileChannel fc) {
+    }
+
+    /**
+     * Forces what was written to a file to its device (nothing for other channels). Not synchronized
+     * with the writing: an fsync can take hundreds of milliseconds on a busy disk, and a writer that
+     * waited for it would hold up everything it records, so a caller may force on a thread of its own
+     * while writing goes on.
+     */
+    public void force() throws IOException {
+        if (out instanceof FileChannel fc && fc.isOpen()) {
             try {
                 fc.force(false);
-            } catch (IOException e) {
-                throw fail(e);
+            } catch (java.nio.channels.ClosedChannelException e) {
+                // closed meanwhile: close() forced it
             }
         }
     }
@@ -261,6 +273,7 @@ public final class McapWriter implements AutoCloseable {
             }
             finishChunk();
             writeEnd();
+            force();
         } finally {
             if (zstd != null) {
                 zstd.close();

@@ -39,6 +39,36 @@ class StreamBusTest {
     }
 
     @Test
+    void publishAllDeliversInOrderWithOneDrainTaskPerSubscription() {
+        List<Runnable> tasks = new ArrayList<>();
+        StreamBus batched = new StreamBus(tasks::add); // runs nothing until the test says so
+        List<Object> sonar = new ArrayList<>();
+        List<Object> everything = new ArrayList<>();
+        Subscription s = batched.subscribe(StreamPattern.any().deviceType(SONAR), DeliveryPolicy.lossless(8),
+                m -> sonar.add(m.payload()));
+        Subscription all = batched.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(3), m -> everything.add(m.payload()));
+        List<Object> latest = new ArrayList<>();
+        batched.subscribe(StreamPattern.any().deviceType(LASER), DeliveryPolicy.latestValue(), m -> latest.add(m.payload()));
+
+        batched.publishAll(List.of(msg(data(SONAR, 0, 1), "s1"), msg(data(LASER, 0, 1), "l1"),
+                msg(data(SONAR, 0, 1), "s2"), msg(data(LASER, 0, 1), "l2")));
+
+        assertEquals(3, tasks.size(), "one drain task per subscription that got messages, not one per message");
+        tasks.forEach(Runnable::run);
+        assertEquals(List.of("s1", "s2"), sonar);
+        assertEquals(List.of("s1", "l1", "s2"), everything, "in publish order, up to the buffer's capacity");
+        assertEquals(1, all.dropped(), "the message over the lossless capacity is counted");
+        assertEquals(List.of("l2"), latest, "latest-value: the newer laser message replaced the older one");
+        assertEquals(4, batched.published());
+        assertEquals(2, s.delivered());
+        assertEquals(Set.of(data(SONAR, 0, 1), data(LASER, 0, 1)), batched.streams());
+
+        tasks.clear();
+        batched.publishAll(List.of());
+        assertTrue(tasks.isEmpty(), "nothing published, nothing scheduled");
+    }
+
+    @Test
     void lateSubscriberGetsLaterMessagesOfExistingStreams() {
         bus.publish(msg(data(LASER, 0, 1), "early"));
         List<Object> got = new ArrayList<>();

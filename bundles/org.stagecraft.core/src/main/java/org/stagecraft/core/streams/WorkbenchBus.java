@@ -16,7 +16,7 @@ import org.stagecraft.streams.Subscription;
  * The stream bus of the running workbench: whatever observes a robot (the Network Spy of a Robot Session,
  * a log replay) publishes here, and the views subscribe here. One per workbench, created on first use with
  * every contributed stream processor running on it ({@link Contributions#startProcessors}), so a derived
- * stream appears for a live robot as it does in a replay; consumers run on virtual threads, so a view hops
+ * stream appears for a live robot as it does in a replay; consumers run on the bus's own threads, so a view hops
  * to its UI thread itself.
  */
 public final class WorkbenchBus {

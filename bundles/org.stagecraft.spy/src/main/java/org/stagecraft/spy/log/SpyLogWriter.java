@@ -82,7 +82,7 @@ public final class SpyLogWriter implements AutoCloseable {
     /**
      * Writes a log to any channel (the writer owns it and closes it). When the channel is a
      * {@link SeekableByteChannel}, a failed write cuts it back to the last complete chunk; when it is
-     * a {@link FileChannel}, {@link #flush()} also forces it to the device.
+     * a {@link FileChannel}, {@link #force()} forces it to the device.
      *
      * @param chunkSize uncompressed bytes after which a chunk is written
      */
@@ -230,9 +230,14 @@ public final class SpyLogWriter implements AutoCloseable {
         return mcap.bytesWritten();
     }
 
-    /** Writes the open chunk, so that everything logged so far is in the file, and forces a file to disk. */
+    /** Writes the open chunk, so that everything logged so far is in the file ({@link #force()}: on the disk). */
     public synchronized void flush() throws IOException {
         mcap.flush();
+    }
+
+    /** Forces what was written to the disk; not synchronized with writing (see {@link McapWriter#force()}). */
+    public void force() throws IOException {
+        mcap.force();
     }
 
     /** Writes the open chunk, the summary and the footer, and closes the file. */

@@ -39,7 +39,7 @@ import org.stagecraft.spy.log.SpyLogWriter;
 public final class LogRecorder implements SpyRecorder {
     static final int BATCH_ENTRIES = 512;
     static final int BATCH_BYTES = 256 << 10;
-    static final long MAX_QUEUED_BYTES = 16L << 20;
+    static final long MAX_QUEUED_BYTES = 4L << 20;
     /** What an entry other than wire bytes costs in the budget (an estimate: they are small). */
     private static final int SMALL_ENTRY = 128;
 
@@ -68,6 +68,10 @@ public final class LogRecorder implements SpyRecorder {
 
     /** The first failure of the log, or null. */
     private volatile Throwable failure;
+    /** A force to the disk is running ({@link #forceAside()}). */
+    private final java.util.concurrent.atomic.AtomicBoolean forcing = new java.util.concurrent.atomic.AtomicBoolean();
+    /** A failed force, for the log thread to act on (it alone closes the writer). */
+    private volatile Throwable forceFailure;
 
     public LogRecorder(SpyLogWriter writer) {
         this.writer = writer;
@@ -104,11 +108,37 @@ public final class LogRecorder implements SpyRecorder {
         add(w -> w.hold(entry), SMALL_ENTRY + entry.length());
     }
 
-    /** Hands everything so far to the log thread, which writes the open chunk and forces the file. */
+    /**
+     * Hands everything so far to the log thread, which writes the open chunk (so a killed process
+     * loses nothing before it) and has the file forced to the disk beside it ({@link #forceAside()}).
+     */
     @Override
     public void flush() throws IOException {
-        add(SpyLogWriter::flush, 0);
+        add(w -> {
+            w.flush();
+            forceAside();
+        }, 0);
         handOver(false);
+    }
+
+    /**
+     * Forces the file to the disk on a thread of its own ("spy-log-sync"), unless a force is still
+     * running: an fsync can take hundreds of milliseconds on a busy disk, and the log thread waiting
+     * for it held up observation and so, with complete observation, the wire (issue 17).
+     */
+    private void forceAside() {
+        if (!forcing.compareAndSet(false, true)) {
+            return;
+        }
+        Thread.ofPlatform().daemon().name("spy-log-sync").start(() -> {
+            try {
+                writer.force();
+            } catch (Throwable t) {
+                forceFailure = t;
+            } finally {
+                forcing.set(false);
+            }
+        });
     }
 
     /** Hands the rest over, waits until the log thread has written it and closed the file. */
@@ -192,6 +222,10 @@ public final class LogRecorder implements SpyRecorder {
                 b = handed.peek();
             } finally {
                 lock.unlock();
+            }
+            Throwable forced = forceFailure;
+            if (forced != null && failure == null) {
+                fail(forced);
             }
             if (failure == null) {
                 for (Entry e : b.entries()) {

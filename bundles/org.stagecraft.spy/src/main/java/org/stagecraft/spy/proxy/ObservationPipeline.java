@@ -150,10 +150,23 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private final PlayerDecoder decoder;
     private final long maxQueuedBytes;
     private final long maxHeldBytes;
+    private final long flowBytes;
+    /**
+     * The observation memory bound of {@code stagecraft spy} and a Robot Session (queued events and
+     * unfinished messages, see the constructor): with complete observation the queue only has to keep
+     * the observation thread busy, and what waits in it is held as decoded objects, several times the
+     * wire bytes, so a small bound keeps the spy's heap (and its resident memory) small.
+     */
+    public static final long DEFAULT_MAX_QUEUED_BYTES = 24L << 20;
     /** Default {@link #observationWait(Duration)}: long enough for a log's fsync, short for a hung disk. */
     public static final Duration DEFAULT_OBSERVATION_WAIT = Duration.ofSeconds(1);
+    /**
+     * Queued bytes past which a forwarding thread waits for observation (complete observation): enough
+     * to keep the observation thread busy, small enough to stay in the young generation.
+     */
+    static final long FLOW_BYTES = 4L << 20;
     /** How long the observation thread sleeps between rounds when nothing wakes it. */
-    static final long TICK_MILLIS = 5;
+    static final long TICK_MILLIS = 50;
     /** Queued bytes that wake the observation thread before its tick. */
     static final long WAKE_BYTES = 256 << 10;
 
@@ -209,6 +222,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         this.recorder = recorder;
         this.maxQueuedBytes = maxQueuedBytes;
         this.maxHeldBytes = maxQueuedBytes / 2;
+        this.flowBytes = Math.min(FLOW_BYTES, maxQueuedBytes / 2);
         try {
             ObservationClasses.load(decoder);
         } catch (Throwable t) {
@@ -395,14 +409,20 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         }
     }
 
-    /** Takes {@code n} bytes of room if {@link #admit} would (an empty queue always has room for one chunk). */
+    /**
+     * Takes {@code n} bytes of room within the flow limit ({@link #FLOW_BYTES}): complete observation
+     * keeps the queue that short, so what waits in it (decoded, several times its wire size) stays
+     * small and young for the garbage collector; the larger bound of the constructor is for
+     * best-effort observation and a stalled one, where {@link #admit} decides.
+     */
     private boolean take(Inflow inflow, long n) {
-        if (queuedBytes.get() == 0 && heldBytes.get() + n <= maxQueuedBytes) {
-            queuedBytes.addAndGet(n);
+        long total = queuedBytes.addAndGet(n);
+        if (total == n || total <= flowBytes && total + heldBytes.get() <= maxQueuedBytes) {
             inflow.queued.addAndGet(n);
-            return true;
+            return true; // an empty queue always takes one chunk, whatever its size
         }
-        return admit(inflow, n);
+        queuedBytes.addAndGet(-n);
+        return false;
     }
 
     private void unreserve(Inflow inflow, long reserved) {
@@ -819,11 +839,11 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             case Failed f -> diagnostic(f.connection(), f.dir(), f.offset(), f.text(), f.t());
             case Noticed n -> diagnostic(n.connection(), Direction.SERVER_TO_CLIENT, 0, n.notice().text(), n.t());
             case Closed cl -> {
+                sendOutbox(); // the connection's last messages reach the bus before its close is recorded, and released
                 openConnections.remove(cl.connection());
                 messageKeys.remove(cl.connection().id());
                 inflows.remove(cl.connection().id());
                 record(r -> r.closed(cl.connection(), cl.t(), cl.reason()));
-                sendOutbox(); // the connection's last messages reach the bus before its release
                 bus.release(cl.connection().client()); // its streams end here: the bus forgets them (issue 17)
             }
             case HoldDone h -> {

@@ -79,6 +79,144 @@ class LogRecorderTest {
         }
     }
 
+    /** A file whose force to the disk hangs until released (a busy disk's fsync), and says who forced it. */
+    private static final class SlowSyncFile extends FileChannel {
+        final FileChannel file;
+        final CountDownLatch forcing = new CountDownLatch(1);
+        final CountDownLatch release = new CountDownLatch(1);
+        final Set<String> forcers = ConcurrentHashMap.newKeySet();
+
+        SlowSyncFile(Path p) throws IOException {
+            file = FileChannel.open(p, StandardOpenOption.CREATE, StandardOpenOption.WRITE, StandardOpenOption.READ,
+                    StandardOpenOption.TRUNCATE_EXISTING);
+        }
+
+        @Override
+        public void force(boolean metaData) throws IOException {
+            forcers.add(Thread.currentThread().getName());
+            forcing.countDown();
+            try {
+                release.await(30, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            file.force(metaData);
+        }
+
+        @Override
+        public int read(ByteBuffer dst) throws IOException {
+            return file.read(dst);
+        }
+
+        @Override
+        public long read(ByteBuffer[] dsts, int offset, int length) throws IOException {
+            return file.read(dsts, offset, length);
+        }
+
+        @Override
+        public int write(ByteBuffer src) throws IOException {
+            return file.write(src);
+        }
+
+        @Override
+        public long write(ByteBuffer[] srcs, int offset, int length) throws IOException {
+            return file.write(srcs, offset, length);
+        }
+
+        @Override
+        public long position() throws IOException {
+            return file.position();
+        }
+
+        @Override
+        public FileChannel position(long newPosition) throws IOException {
+            file.position(newPosition);
+            return this;
+        }
+
+        @Override
+        public long size() throws IOException {
+            return file.size();
+        }
+
+        @Override
+        public FileChannel truncate(long size) throws IOException {
+            file.truncate(size);
+            return this;
+        }
+
+        @Override
+        public long transferTo(long position, long count, WritableByteChannel target) throws IOException {
+            return file.transferTo(position, count, target);
+        }
+
+        @Override
+        public long transferFrom(java.nio.channels.ReadableByteChannel src, long position, long count) throws IOException {
+            return file.transferFrom(src, position, count);
+        }
+
+        @Override
+        public int read(ByteBuffer dst, long position) throws IOException {
+            return file.read(dst, position);
+        }
+
+        @Override
+        public int write(ByteBuffer src, long position) throws IOException {
+            return file.write(src, position);
+        }
+
+        @Override
+        public java.nio.MappedByteBuffer map(MapMode mode, long position, long size) throws IOException {
+            return file.map(mode, position, size);
+        }
+
+        @Override
+        public java.nio.channels.FileLock lock(long position, long size, boolean shared) throws IOException {
+            return file.lock(position, size, shared);
+        }
+
+        @Override
+        public java.nio.channels.FileLock tryLock(long position, long size, boolean shared) throws IOException {
+            return file.tryLock(position, size, shared);
+        }
+
+        @Override
+        protected void implCloseChannel() throws IOException {
+            file.close();
+        }
+    }
+
+    @Test
+    void aSlowForceToTheDiskHoldsUpNeitherTheLogThreadNorItsCaller() throws Exception {
+        Path log = dir.resolve("slow-sync.mcap");
+        SlowSyncFile ch = new SlowSyncFile(log);
+        LogRecorder r = new LogRecorder(SpyLogWriter.create(ch, Map.of(), 1 << 20));
+        r.opened(CONN, 1_000);
+        r.wire(CONN, Direction.SERVER_TO_CLIENT, new WireEvent.Unframed(0, new byte[100], "first"), 2_000);
+        r.flush();
+        assertTrue(ch.forcing.await(20, TimeUnit.SECONDS), "the flush had the file forced");
+        long before = ch.size();
+        // the force hangs: what comes next is still written to the file, and the caller never waits for it
+        for (int i = 0; i < 50; i++) {
+            r.wire(CONN, Direction.SERVER_TO_CLIENT, new WireEvent.Unframed(100 + 100L * i, new byte[100], "more"), 3_000 + i);
+        }
+        r.flush();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (ch.size() == before && System.nanoTime() < deadline) {
+            Thread.onSpinWait();
+        }
+        assertTrue(ch.size() > before, "the second chunk reached the file while the first force hung");
+        assertEquals(1, ch.release.getCount(), "the force was still hanging meanwhile");
+        assertEquals(Set.of("spy-log-sync"), ch.forcers, "forced beside the log thread, not on it");
+        ch.release.countDown();
+        r.closed(CONN, 10_000, "done");
+        r.close();
+        try (SpyLogReader in = SpyLogReader.open(log)) {
+            assertEquals(51, in.messageCount(), "every wire entry is in the log");
+            assertEquals(2, in.eventCount(), "and the open and close events");
+        }
+    }
+
     @Test
     void writesEveryCallInOrderOnItsOwnThread() throws Exception {
         Path log = dir.resolve("order.mcap");

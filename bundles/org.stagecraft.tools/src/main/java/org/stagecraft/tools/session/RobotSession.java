@@ -46,7 +46,6 @@ import org.stagecraft.tools.process.ToolState;
  */
 public final class RobotSession implements AutoCloseable {
     public static final String PLAYER_TOOL_NAME = "Player";
-    private static final long OBSERVER_QUEUE_BYTES = 64L << 20;
 
     private final SessionConfig config;
     private final CodecRegistry codecs;
@@ -202,7 +201,7 @@ public final class RobotSession implements AutoCloseable {
                 throw new IOException("cannot write the spy log " + config.log() + ": " + e.getMessage(), e);
             }
         }
-        pipeline = new ObservationPipeline(bus, new PlayerDecoder(codecs), recorder, OBSERVER_QUEUE_BYTES);
+        pipeline = new ObservationPipeline(bus, new PlayerDecoder(codecs), recorder, ObservationPipeline.DEFAULT_MAX_QUEUED_BYTES);
         spy = new NetworkSpy(routes, pipeline);
         configureHolds(spy, config.spy());
         spy.start();

@@ -41,7 +41,7 @@ import org.stagecraft.recording.peers.ReplayPeer;
  * wrong relay fails instead of winning.
  *
  * <pre>java -jar spy-bench.jar [--sessions 6] [--clients 4] [--repeat 16] [--rounds 2] [--pings 5000]
- *     [--pace-seconds 15] [--bus 0] [--paced 1] [--full 1] [--others 1]</pre>
+ *     [--pace-seconds 15] [--bus 0] [--paced 1] [--full 1] [--others 1] [--paced-warmup 1]</pre>
  * ({@code --paced 0} or {@code --full 0} leaves a phase out, {@code --others 0} runs the full spy alone.)
  */
 public final class RelayBench {
@@ -65,7 +65,7 @@ public final class RelayBench {
     public static void main(String[] args) throws Exception {
         Map<String, Integer> opt = new LinkedHashMap<>(Map.of("sessions", 6, "clients", 4, "repeat", 16, "rounds", 2,
                 "pings", 5000, "pace-seconds", 15, "bus", 0));
-        opt.putAll(Map.of("paced", 1, "full", 1, "others", 1));
+        opt.putAll(Map.of("paced", 1, "full", 1, "others", 1, "paced-warmup", 1));
         for (int i = 0; i + 1 < args.length; i += 2) {
             String k = args[i].replaceFirst("^--", "");
             if (!opt.containsKey(k)) {
@@ -102,7 +102,7 @@ public final class RelayBench {
                 }
                 for (int k = 0; k < relays.size(); k++) {
                     Relay relay = relays.get((k + round) % relays.size()); // rotate so no relay always runs first
-                    RunResult r = phase == Phase.PACED ? runPaced(relay, paced, w, pacedMessages)
+                    RunResult r = phase == Phase.PACED ? runPaced(relay, paced, w, pacedMessages, opt.get("paced-warmup") != 0)
                             : runFull(relay, w, clients, opt.get("pings"), fullMessages);
                     results.computeIfAbsent(phase, x -> new LinkedHashMap<>())
                             .computeIfAbsent(relay.name(), x -> new ArrayList<>()).add(r);
@@ -121,7 +121,8 @@ public final class RelayBench {
     }
 
     /** Six robots at their recorded pace, one connection each, and a robot program pinging 100 times a second. */
-    private static RunResult runPaced(Relay relay, List<TimedSession> sessions, Workload w, long sessionMessages) throws Exception {
+    private static RunResult runPaced(Relay relay, List<TimedSession> sessions, Workload w, long sessionMessages,
+            boolean pacedWarmUp) throws Exception {
         double cpu;
         double rss;
         Map<String, Double> threads;
@@ -141,23 +142,25 @@ public final class RelayBench {
                 warmUp(all.subList(fronts.size(), all.size()), w, fast, peers);
             }
             InetSocketAddress pingAt = fronts.get(fronts.size() - 1);
+            if (pacedWarmUp) {
+                // and once at the recorded pace: a relay that sleeps between messages takes other paths (parking,
+                // waking, small batches) than the fast passes, and the JIT compiles those too (seen: ~9 µs of
+                // compiler time per message in the window without this pass)
+                AtomicBoolean warming = new AtomicBoolean(true);
+                Future<PingProbe.Rtts> warmPings = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().factory())
+                        .submit(() -> PingProbe.run(pingAt, w, 1_000_000, warming::get, 10_000_000L));
+                playPaced(relay, sessions, fronts, peers);
+                warming.set(false);
+                warmPings.get(60, TimeUnit.SECONDS);
+                players.verifyServed(sessions.size());
+            }
             double cpu0 = ProcStat.cpuSeconds(relay.pids());
             var threads0 = ProcStat.cpuSecondsByThread(relay.pids());
             AtomicBoolean running = new AtomicBoolean(true);
             Future<PingProbe.Rtts> probe = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().factory())
                     .submit(() -> PingProbe.run(pingAt, w, 1_000_000, running::get, 10_000_000L));
-            List<Future<Boolean>> programs = new ArrayList<>();
             t0 = System.nanoTime();
-            for (int s = 0; s < sessions.size(); s++) {
-                InetSocketAddress at = fronts.get(s);
-                TimedSession session = sessions.get(s);
-                programs.add(peers.submit(() -> session.play(new Socket(at.getAddress(), at.getPort()), Direction.CLIENT_TO_SERVER)));
-            }
-            for (Future<Boolean> p : programs) {
-                if (!p.get(300, TimeUnit.SECONDS)) {
-                    throw new IllegalStateException(relay.name() + ": a paced program received other bytes than recorded");
-                }
-            }
+            playPaced(relay, sessions, fronts, peers);
             elapsed = System.nanoTime() - t0;
             running.set(false);
             PingProbe.Rtts r = probe.get(60, TimeUnit.SECONDS);
@@ -175,6 +178,22 @@ public final class RelayBench {
                 ProcStat.cpuSpent(threads, cpu, messages));
     }
 
+    /** Every session once at its recorded pace, one robot program each, checking what each received. */
+    private static void playPaced(Relay relay, List<TimedSession> sessions, List<InetSocketAddress> fronts,
+            ExecutorService peers) throws Exception {
+        List<Future<Boolean>> programs = new ArrayList<>();
+        for (int s = 0; s < sessions.size(); s++) {
+            InetSocketAddress at = fronts.get(s);
+            TimedSession session = sessions.get(s);
+            programs.add(peers.submit(() -> session.play(new Socket(at.getAddress(), at.getPort()), Direction.CLIENT_TO_SERVER)));
+        }
+        for (Future<Boolean> p : programs) {
+            if (!p.get(300, TimeUnit.SECONDS)) {
+                throw new IllegalStateException(relay.name() + ": a paced program received other bytes than recorded");
+            }
+        }
+    }
+
     private static RunResult runFull(Relay relay, Workload w, int clients, int pings, long loadMessages) throws Exception {
         double cpu;
         double rss;
@@ -187,7 +206,9 @@ public final class RelayBench {
                 ExecutorService peers = Executors.newVirtualThreadPerTaskExecutor()) {
             List<InetSocketAddress> fronts = relay.start(players.addresses());
             InetSocketAddress pingAt = fronts.get(fronts.size() - 1);
-            warmUp(fronts, w, players, peers);
+            for (int pass = 0; pass < 3; pass++) { // so that the JIT has compiled the relay's paths (as paced)
+                warmUp(fronts, w, players, peers);
+            }
             idle = PingProbe.run(pingAt, w, pings, () -> true).sortedMicros();
 
             CountDownLatch go = new CountDownLatch(1);

@@ -67,9 +67,19 @@ final class SocatRelay implements Relay {
         }
     }
 
+    /**
+     * socat's processes and their live children: socat forks one per connection, and a child's time
+     * reaches its parent's (cutime) only once it has ended and was waited for, so a connection still
+     * open at a reading (the ping probe's, for the whole phase) would otherwise not count at all.
+     */
     @Override
     public List<Long> pids() {
-        return processes.stream().map(Process::pid).toList();
+        List<Long> pids = new java.util.ArrayList<>();
+        for (Process p : processes) {
+            pids.add(p.pid());
+            p.descendants().forEach(d -> pids.add(d.pid()));
+        }
+        return pids;
     }
 
     @Override

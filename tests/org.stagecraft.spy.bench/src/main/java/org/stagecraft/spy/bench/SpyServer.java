@@ -93,7 +93,7 @@ public final class SpyServer {
             log = Files.createTempFile(logDir, "bench-", ".mcap");
             recorder = new LogRecorder(SpyLogWriter.create(log, Map.of("tool", "relay benchmark")));
         }
-        pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder, 64L << 20);
+        pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder, ObservationPipeline.DEFAULT_MAX_QUEUED_BYTES);
         spy = new NetworkSpy(routes, pipeline);
         spy.start();
         return spy.boundAddresses();
@@ -114,8 +114,10 @@ public final class SpyServer {
             Thread.currentThread().interrupt();
         }
         bus.close();
-        reports.add(String.format("%d messages decoded, %d decode problems, %d bytes not observed%s%s",
+        reports.add(String.format("%d messages decoded, %d decode problems, %d bytes not observed,"
+                + " forwarding waited %.2f s in all for observation (%d stalls)%s%s",
                 pipeline.messages(), pipeline.decodeProblems(), pipeline.droppedBytes(),
+                pipeline.waitedForObservation().toNanos() / 1e9, pipeline.stalls(),
                 log == null ? "" : String.format(", log %.1f MB", Files.size(log) / 1e6),
                 pipeline.recorderError() == null ? "" : ", log error: " + pipeline.recorderError()));
         pipeline = null;

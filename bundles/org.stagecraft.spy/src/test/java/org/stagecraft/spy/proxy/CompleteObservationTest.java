@@ -1,0 +1,217 @@
+package org.stagecraft.spy.proxy;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.Executor;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.recording.trace.TraceCorpus;
+import org.stagecraft.recording.trace.TraceReader;
+import org.stagecraft.recording.trace.TraceRecord;
+import org.stagecraft.streams.StreamBus;
+
+/**
+ * Issue 17, item 8: a burst faster than observation is observed completely — the forwarding threads
+ * wait for room while observation makes progress, so TCP slows the sender instead of the log losing
+ * bytes — and a stuck observation costs the wire at most one wait limit, after which it is dropped
+ * from observation as before.
+ */
+@Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class CompleteObservationTest {
+    private static final Executor PEERS = Executors.newVirtualThreadPerTaskExecutor();
+    private static final PlayerDecoder DECODER = new PlayerDecoder(CodecRegistry.standard());
+    /** A small bound, so that the recorded session is many times what observation may hold. */
+    private static final long BOUND = 256 << 10;
+    private final List<AutoCloseable> cleanup = new ArrayList<>();
+
+    @AfterEach
+    void close() throws Exception {
+        Collections.reverse(cleanup);
+        for (AutoCloseable c : cleanup) {
+            c.close();
+        }
+    }
+
+    /** The two byte streams of connection 1 of a recording (index 0: program to Player). */
+    private static byte[][] streams(String trace) throws IOException {
+        ByteArrayOutputStream c2s = new ByteArrayOutputStream();
+        ByteArrayOutputStream s2c = new ByteArrayOutputStream();
+        try (TraceReader r = new TraceReader(TraceCorpus.file(trace))) {
+            for (TraceRecord rec = r.next(); rec != null; rec = r.next()) {
+                if (rec instanceof TraceRecord.Chunk c && c.stream().conn() == 1) {
+                    (c.stream().dir() == Direction.CLIENT_TO_SERVER ? c2s : s2c).writeBytes(c.data());
+                }
+            }
+        }
+        return new byte[][] {c2s.toByteArray(), s2c.toByteArray()};
+    }
+
+    /** A log slower than the wire: every entry costs it {@code costNanos} (a slow disk, a loaded machine). */
+    private static final class SlowLog extends ObservationPipelineTest.RecordingRecorder {
+        private final long costNanos;
+        final AtomicLong entries = new AtomicLong();
+
+        SlowLog(long costNanos) {
+            this.costNanos = costNanos;
+        }
+
+        @Override
+        public void wire(ConnectionInfo c, Direction dir, WireEvent e, long t) throws IOException {
+            long until = System.nanoTime() + costNanos;
+            while (System.nanoTime() < until) {
+                Thread.onSpinWait(); // work, not waiting for anything: the log is simply slow
+            }
+            entries.incrementAndGet();
+            super.wire(c, dir, e, t);
+        }
+    }
+
+    /** Player sending the recorded stream as fast as the socket takes it, and reading what the program sends. */
+    private ServerSocket player(byte[] s2c, CompletableFuture<byte[]> received) throws IOException {
+        ServerSocket up = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
+        cleanup.add(up);
+        Thread.ofVirtual().start(() -> {
+            try (Socket s = up.accept()) {
+                CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
+                    try {
+                        s.getOutputStream().write(s2c);
+                        s.shutdownOutput();
+                    } catch (IOException e) {
+                        throw new IllegalStateException(e);
+                    }
+                }, PEERS);
+                received.complete(s.getInputStream().readAllBytes());
+                w.join();
+            } catch (IOException e) {
+                received.completeExceptionally(e);
+            }
+        });
+        return up;
+    }
+
+    private static byte[] program(NetworkSpy spy, byte[] c2s) throws IOException {
+        try (Socket s = new Socket()) {
+            s.connect(spy.boundAddresses().get(0));
+            CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
+                try {
+                    s.getOutputStream().write(c2s);
+                    s.shutdownOutput();
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+            }, PEERS);
+            byte[] got = s.getInputStream().readAllBytes();
+            w.join();
+            return got;
+        }
+    }
+
+    private NetworkSpy spy(ServerSocket player, ObservationPipeline pipeline) throws IOException {
+        NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
+        cleanup.add(spy);
+        spy.start();
+        return spy;
+    }
+
+    @Test
+    void aBurstFasterThanObservationIsForwardedExactlyAndObservedCompletely() throws Exception {
+        byte[][] rec = streams("rates.headless-push.trace.jsonl"); // a headless Stage pushing as fast as it can
+        assertTrue(rec[1].length > 8 * BOUND, "the burst is many times the observation bound: " + rec[1].length);
+        StreamBus bus = new StreamBus();
+        cleanup.add(bus);
+        SlowLog log = new SlowLog(20_000);
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, log, BOUND);
+        cleanup.add(pipeline);
+        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
+        NetworkSpy spy = spy(player(rec[1], playerGot), pipeline);
+
+        byte[] programGot = program(spy, rec[0]);
+        assertArrayEquals(rec[1], programGot, "the program received Player's bytes exactly");
+        assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS), "Player received the program's bytes exactly");
+        assertTrue(log.closedSeen.await(60, TimeUnit.SECONDS), "the connection's close was recorded");
+
+        assertEquals(0, pipeline.droppedBytes(), "nothing forwarded went unobserved");
+        assertEquals(0, pipeline.stalls(), "observation was slow, never stuck");
+        assertTrue(pipeline.waitedForObservation().toNanos() > 0, "the wire was paced by observation");
+        assertArrayEquals(rec[1], log.bytes(Direction.SERVER_TO_CLIENT), "the log has every byte Player sent");
+        assertArrayEquals(rec[0], log.bytes(Direction.CLIENT_TO_SERVER), "the log has every byte the program sent");
+        assertTrue(pipeline.heldBytes() <= BOUND, "observation holds at most its bound: " + pipeline.heldBytes());
+    }
+
+    @Test
+    void bestEffortObservationNeverWaitsAndCountsWhatItLeftOut() throws Exception {
+        byte[][] rec = streams("rates.headless-push.trace.jsonl");
+        StreamBus bus = new StreamBus();
+        cleanup.add(bus);
+        SlowLog log = new SlowLog(20_000);
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, log, BOUND).observationWait(Duration.ZERO);
+        cleanup.add(pipeline);
+        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
+        NetworkSpy spy = spy(player(rec[1], playerGot), pipeline);
+
+        assertArrayEquals(rec[1], program(spy, rec[0]));
+        assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS));
+        assertTrue(log.closedSeen.await(60, TimeUnit.SECONDS));
+        assertEquals(Duration.ZERO, pipeline.waitedForObservation(), "best effort: the wire never waited");
+        assertTrue(pipeline.droppedBytes() > 0, "a log this slow could not take the burst: " + pipeline.droppedBytes());
+        long logged = log.bytes(Direction.SERVER_TO_CLIENT).length + log.bytes(Direction.CLIENT_TO_SERVER).length;
+        assertEquals(rec[0].length + rec[1].length, logged + pipeline.droppedBytes(),
+                "every forwarded byte is either logged or counted as unobserved");
+    }
+
+    @Test
+    void aStuckObservationCostsTheWireOneWaitLimitThenItIsLeftOut() throws Exception {
+        byte[][] rec = streams("rates.headless-push.trace.jsonl");
+        StreamBus bus = new StreamBus();
+        cleanup.add(bus);
+        CountDownLatch release = new CountDownLatch(1);
+        ObservationPipelineTest.RecordingRecorder hung = new ObservationPipelineTest.RecordingRecorder() {
+            @Override
+            public void wire(ConnectionInfo c, Direction dir, WireEvent e, long t) throws IOException {
+                try {
+                    release.await(); // a log on a disk that hangs
+                } catch (InterruptedException ex) {
+                    Thread.currentThread().interrupt();
+                }
+                super.wire(c, dir, e, t);
+            }
+        };
+        Duration limit = Duration.ofMillis(300);
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, hung, BOUND).observationWait(limit);
+        cleanup.add(pipeline);
+        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
+        NetworkSpy spy = spy(player(rec[1], playerGot), pipeline);
+
+        assertArrayEquals(rec[1], program(spy, rec[0]), "forwarding completes although observation is stuck");
+        assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS));
+        assertTrue(pipeline.droppedBytes() > 0, "what could not be observed is counted");
+        assertTrue(pipeline.stalls() >= 1, "the stall was noticed");
+        // each direction's thread waits at most one limit before the stall is noticed; after it, no chunk waits
+        // (a margin of one more limit for the scheduling of a loaded machine)
+        assertTrue(pipeline.waitedForObservation().compareTo(limit.multipliedBy(2 * 2)) <= 0,
+                "the wire waited at most one limit per direction: " + pipeline.waitedForObservation());
+        release.countDown();
+    }
+}
