@@ -16,6 +16,7 @@ import java.util.TreeMap;
 import java.util.zip.CRC32;
 
 import com.github.luben.zstd.Zstd;
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * Writes an MCAP file (https://mcap.dev, major version 0): header, metadata, schemas and channels,
@@ -50,7 +51,7 @@ public final class McapWriter implements AutoCloseable {
     private final CRC32 dataCrc = new CRC32();
     private long position;
     private long lastComplete;
-    private IOException failure;
+    private @Nullable IOException failure;
     private boolean closed;
 
     private final List<Schema> schemas = new ArrayList<>(); // id - 1
