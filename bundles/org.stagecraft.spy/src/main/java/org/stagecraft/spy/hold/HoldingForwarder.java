@@ -6,9 +6,11 @@ import java.io.OutputStream;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicBoolean;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.proxy.ConnectionInfo;
@@ -49,7 +51,7 @@ public final class HoldingForwarder {
     private final BoundaryTracker tracker = new BoundaryTracker();
     private long upstreamOffset;
     /** Bytes of the chunk being relayed that are to be forwarded, written in one go. */
-    private byte[] pendBuf;
+    private byte @Nullable [] pendBuf;
     private int pendStart;
     private int pendLen;
     /** The current message's header is being kept back until it is complete (a hold was on at its start). */
@@ -182,7 +184,7 @@ public final class HoldingForwarder {
     }
 
     /** Why this connection's stream cannot be held (it is not Player messages), or null. */
-    public String problem() {
+    public @Nullable String problem() {
         synchronized (lock) {
             return tracker.lostReason();
         }
@@ -242,11 +244,11 @@ public final class HoldingForwarder {
 
     private void messageDone() throws IOException {
         if (currentMotion) {
-            MessageHeader h = tracker.header();
+            MessageHeader h = Objects.requireNonNull(tracker.header()); // a motion command has its header
             byte[] payload = motionPayload.toByteArray();
             MotionCommand.Device d = MotionCommand.Device.of(h);
             int state = MotionCommand.velState(h, payload);
-            Last before = devices.get(d);
+            @Nullable Last before = devices.get(d);
             devices.put(d, new Last(h, state >= 0 ? state : before != null ? before.velState() : -1));
             moving = MotionCommand.moving(h, payload);
         }
@@ -269,7 +271,7 @@ public final class HoldingForwarder {
         heldBack++;
         byte[] bytes = heldBytes.toByteArray();
         heldBytes.reset();
-        MessageHeader h = tracker.header();
+        MessageHeader h = Objects.requireNonNull(tracker.header()); // a motion command has its header
         observer.action(new HoldAction(connection, HoldEntry.Action.HELD_BACK, tracker.messageStart(), heldUpstreamAt, h,
                 bytes, "held back " + commandName(h) + " to " + MotionCommand.Device.of(h) + " (" + holds.reasonsText() + ")"));
     }
@@ -299,7 +301,7 @@ public final class HoldingForwarder {
         }
     }
 
-    private static String commandName(MessageHeader h) {
+    private static String commandName(@Nullable MessageHeader h) {
         return switch (h.subtype()) {
             case MotionCommand.CMD_VEL -> "CMD_VEL";
             case MotionCommand.CMD_POS -> "CMD_POS";

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.WireEvent;
@@ -67,7 +68,7 @@ public final class LogRecorder implements SpyRecorder {
     private boolean closed;
 
     /** The first failure of the log, or null. */
-    private volatile Throwable failure;
+    private volatile @Nullable Throwable failure;
 
     public LogRecorder(SpyLogWriter writer) {
         this.writer = writer;
