@@ -75,7 +75,7 @@ public final class MessageFilter {
         return m.toStreamMessage().map(StreamMessage::key);
     }
 
-    private boolean contains(@Nullable String s) {
+    private boolean contains(String s) {
         return s.toLowerCase(Locale.ROOT).contains(text);
     }
 

@@ -179,10 +179,10 @@ public final class ReplaySession implements AutoCloseable {
         }
         Replayer old = replayer;
         SharedLog oldShared = shared;
-        Replayer r = o.replayer();
+        Replayer r = Objects.requireNonNull(o.replayer()); // read without an error: both are there
         boolean play = old != null && carryOn(old, r);
         r.addListener(new Listener(r));
-        SharedLog s = o.shared();
+        SharedLog s = Objects.requireNonNull(o.shared());
         SessionLog l = s.log();
         holds = holdMarks(l);
         shared = s;
@@ -212,7 +212,7 @@ public final class ReplaySession implements AutoCloseable {
      * The new replayer takes over from the old: same speed, just past the same message. Says whether
      * the old one was playing (the new one plays once it is in place).
      */
-    private boolean carryOn(Replayer old, @Nullable Replayer r) {
+    private boolean carryOn(Replayer old, Replayer r) {
         boolean playing = old.playing();
         old.pause(); // nothing more from the old log: what it published last is final
         r.setSpeed(old.speed());

@@ -78,11 +78,13 @@ final class BoundaryTracker {
     }
 
     /** The current message's header, once {@link #HEADER_DONE} was returned for it (until the next begins). */
-    @Nullable MessageHeader header() {
-        if (current == null) {
-            current = MessageHeader.read(header, 0);
+    MessageHeader header() {
+        MessageHeader c = current;
+        if (c == null) {
+            c = MessageHeader.read(header, 0);
+            current = c;
         }
-        return current;
+        return c;
     }
 
     /** The current message's interface code (valid like {@link #header()}). */

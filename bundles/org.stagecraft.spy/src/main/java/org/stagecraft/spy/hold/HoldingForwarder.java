@@ -6,7 +6,6 @@ import java.io.OutputStream;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicBoolean;
 
@@ -244,7 +243,7 @@ public final class HoldingForwarder {
 
     private void messageDone() throws IOException {
         if (currentMotion) {
-            MessageHeader h = Objects.requireNonNull(tracker.header()); // a motion command has its header
+            MessageHeader h = tracker.header();
             byte[] payload = motionPayload.toByteArray();
             MotionCommand.Device d = MotionCommand.Device.of(h);
             int state = MotionCommand.velState(h, payload);
@@ -271,7 +270,7 @@ public final class HoldingForwarder {
         heldBack++;
         byte[] bytes = heldBytes.toByteArray();
         heldBytes.reset();
-        MessageHeader h = Objects.requireNonNull(tracker.header()); // a motion command has its header
+        MessageHeader h = tracker.header();
         observer.action(new HoldAction(connection, HoldEntry.Action.HELD_BACK, tracker.messageStart(), heldUpstreamAt, h,
                 bytes, "held back " + commandName(h) + " to " + MotionCommand.Device.of(h) + " (" + holds.reasonsText() + ")"));
     }
@@ -301,7 +300,7 @@ public final class HoldingForwarder {
         }
     }
 
-    private static String commandName(@Nullable MessageHeader h) {
+    private static String commandName(MessageHeader h) {
         return switch (h.subtype()) {
             case MotionCommand.CMD_VEL -> "CMD_VEL";
             case MotionCommand.CMD_POS -> "CMD_POS";
