@@ -5,7 +5,9 @@
    exactly the Require-Bundle edges between Stagecraft's own bundles (bundles/*/META-INF/MANIFEST.MF;
    a node name drops `org.stagecraft.` and writes `.` as `_`). An edge in one and not the other fails.
 2. The rule: a bundle in the "Pure Java" table requires no `org.eclipse.*` bundle and imports no
-   `org.eclipse.*` / `org.osgi.*` package; every bundle of bundles/ is in one of the two tables.
+   `org.eclipse.*` / `org.osgi.*` package (except `org.eclipse.jdt.annotation` with
+   `resolution:=optional`: the null annotations, compile time only; "Null analysis"); every bundle
+   of bundles/ is in one of the two tables.
 3. API discipline (docs/architecture.md, "API discipline"): a package named `*.internal` is exported
    only with `x-internal:=true` or `x-friends:=`; and no bundle's main code (bundles/*/src/main) or
    plug-in test bundle (tests/* with a manifest) imports a class of another bundle's package that is
@@ -153,6 +155,17 @@ def table_bundles(doc, heading):
     return set(re.findall(r"^\| `(org\.stagecraft\.[\w.]+)` \|", "\n".join(rows), re.M))
 
 
+# The JDT null annotations (docs/architecture.md, "Null analysis") have CLASS retention: nothing
+# needs them at run time, so a pure-Java bundle may import their package, optionally.
+COMPILE_TIME_ONLY_PACKAGES = {"org.eclipse.jdt.annotation"}
+
+
+def compile_time_only(clause):
+    """Whether an Import-Package clause is an optional import of an annotation-only package."""
+    parts = [p.strip() for p in clause.split(";")]
+    return parts[0] in COMPILE_TIME_ONLY_PACKAGES and "resolution:=optional" in parts[1:]
+
+
 def check(doc, bundles):
     problems = []
     built, drawn = manifest_edges(bundles), doc_edges(doc)
@@ -172,7 +185,7 @@ def check(doc, bundles):
             if c.startswith("org.eclipse."):
                 problems.append(f"{name} is pure Java but requires {c.split(';')[0]}")
         for c in clauses(h.get("Import-Package")):
-            if c.startswith(("org.eclipse.", "org.osgi.")):
+            if c.startswith(("org.eclipse.", "org.osgi.")) and not compile_time_only(c):
                 problems.append(f"{name} is pure Java but imports {c.split(';')[0]}")
     for name, h in sorted(bundles.items()):
         for c in clauses(h.get("Export-Package")):
@@ -197,6 +210,10 @@ def self_test(doc, bundles):
     tampered[pure_name]["Require-Bundle"] = "org.eclipse.core.runtime," + bundles[pure_name].get("Require-Bundle", "")
     if not any("requires org.eclipse.core.runtime" in p for p in check(doc, tampered)):
         return "self-test: a pure-Java bundle requiring org.eclipse.core.runtime was accepted"
+    tampered[pure_name] = dict(bundles[pure_name])
+    tampered[pure_name]["Import-Package"] = "org.eclipse.jdt.annotation"   # not optional: needed at run time
+    if not any("imports org.eclipse.jdt.annotation" in p for p in check(doc, tampered)):
+        return "self-test: a pure-Java bundle importing org.eclipse.jdt.annotation (mandatory) was accepted"
     if restricted_exports_self_test():
         return restricted_exports_self_test()
     return None

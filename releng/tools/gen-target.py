@@ -677,6 +677,13 @@ ZSTD_JNI_VERSION = "1.5.7-28"
 # slf4j-api [2.0,3) (already in the target for pty4j).  Pinned: the server is tested against it.
 JAVA_WEBSOCKET_VERSION = "1.6.0"
 
+# The JDT null annotations (@NonNullByDefault, @Nullable, @NonNull; docs/architecture.md, "Null
+# analysis"): an OSGi bundle as published, exporting org.eclipse.jdt.annotation without a version
+# (so bundles import it without a range), with no dependencies.  Compile time only: the annotations
+# have CLASS retention, bundles import the package with resolution:=optional, and neither the feature
+# nor the product includes the bundle.  Pinned: the compiler's null analysis is tuned against it.
+JDT_ANNOTATION_VERSION = "2.4.100"
+
 JOGL_VERSION = "2.6.0"
 # JOGL in OSGi.  Gluegen loads every JNI library (its own and JOGL's) with System.load/loadLibrary
 # called from its own class JNILibLoaderBase, and the JVM binds a JNI library to the class loader of
@@ -876,6 +883,12 @@ def main():
       'includeDependencyScopes="compile" includeSource="false" missingManifest="error">')
     w("      <dependencies>")
     w(dep_xml("org.java-websocket", "Java-WebSocket", JAVA_WEBSOCKET_VERSION))
+    w("      </dependencies>")
+    w("    </location>")
+    w('    <location type="Maven" label="JDT null annotations (compile time only)" includeDependencyDepth="none" '
+      'includeDependencyScopes="compile" includeSource="false" missingManifest="error">')
+    w("      <dependencies>")
+    w(dep_xml("org.eclipse.jdt", "org.eclipse.jdt.annotation", JDT_ANNOTATION_VERSION))
     w("      </dependencies>")
     w("    </location>")
     out.extend(pty4j_locations())

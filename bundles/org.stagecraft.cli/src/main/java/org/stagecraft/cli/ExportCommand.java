@@ -11,6 +11,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.replay.export.CsvExport;
 import org.stagecraft.replay.export.ExportFilter;
@@ -130,7 +131,7 @@ final class ExportCommand {
     }
 
     /** Standard output stays open after the export; a file is closed. */
-    private static Writer writer(String outFile, PrintStream out) throws IOException {
+    private static Writer writer(@Nullable String outFile, PrintStream out) throws IOException {
         if (outFile != null) {
             return Files.newBufferedWriter(Path.of(outFile), StandardCharsets.UTF_8);
         }

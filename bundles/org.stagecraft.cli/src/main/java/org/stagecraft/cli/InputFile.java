@@ -4,13 +4,15 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /** Checks a command's FILE argument and explains what is wrong with it. */
 final class InputFile {
     private InputFile() {
     }
 
     /** @return the path, or null after printing why it cannot be read */
-    static Path require(String command, String[] args, PrintStream err) {
+    static @Nullable Path require(String command, String[] args, PrintStream err) {
         if (args.length != 1) {
             err.println("usage: stagecraft " + command + " FILE");
             return null;

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.recording.play.ChunkSource;
 import org.stagecraft.recording.play.PlayableConnection;
@@ -58,7 +59,7 @@ final class RecordedServerStreams {
         }
 
         @Override
-        public TimedChunk next() throws IOException {
+        public @Nullable TimedChunk next() throws IOException {
             for (LogMessage m = cursor.next(); m != null && m.timeNanos() <= c.endNanos(); m = cursor.next()) {
                 if (m.connection().id() == c.conn() && m.dir() == dir && isWire(m)) {
                     return new TimedChunk(Math.max(0, m.timeNanos() - c.openedNanos()) / 1e9, m.bytes());

@@ -16,6 +16,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 import java.util.function.Function;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.foxglove.FoxgloveSink;
 import org.stagecraft.foxglove.live.BusRelay;
 import org.stagecraft.foxglove.live.EndOfConnections;
@@ -51,7 +52,7 @@ final class SpyCommand {
      * @param foxglove      where to serve the live view, or null for none
      * @param foxgloveQueue how many messages may wait for each viewer before new ones are dropped
      */
-    record Options(List<Route> routes, Path log, Duration upstreamGrace, InetSocketAddress foxglove, int foxgloveQueue) {
+    record Options(List<Route> routes, @Nullable Path log, Duration upstreamGrace, @Nullable InetSocketAddress foxglove, int foxgloveQueue) {
     }
 
     private final Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter;
@@ -129,9 +130,10 @@ final class SpyCommand {
         }
         // The Foxglove server too, before the log: a port in use must not leave an empty log either.
         FoxgloveServer foxglove = null;
-        if (o.foxglove() != null) {
+        InetSocketAddress foxgloveAddress = o.foxglove();
+        if (foxgloveAddress != null) {
             try {
-                foxglove = FoxgloveServer.start(o.foxglove(), "Stagecraft spy", o.foxgloveQueue());
+                foxglove = FoxgloveServer.start(foxgloveAddress, "Stagecraft spy", o.foxgloveQueue());
             } catch (IOException e) {
                 err.println("stagecraft spy: " + e.getMessage());
                 spy.close();
@@ -140,14 +142,15 @@ final class SpyCommand {
             foxglove.onNotice(n -> err.print((tty ? "\n" : "") + "stagecraft spy: foxglove: " + n + (tty ? "" : "\n")));
         }
         LogRecorder recorder = null;
-        if (o.log() != null) {
+        Path log = o.log();
+        if (log != null) {
             try {
                 Map<String, String> meta = new LinkedHashMap<>();
                 meta.put("tool", "stagecraft spy");
                 meta.put("routes", o.routes().toString());
-                recorder = new LogRecorder(SpyLogWriter.create(o.log(), meta));
+                recorder = new LogRecorder(SpyLogWriter.create(log, meta));
             } catch (IOException e) {
-                err.println("stagecraft spy: cannot write the log " + o.log() + ": " + LogFileProblem.reason(o.log(), e));
+                err.println("stagecraft spy: cannot write the log " + log + ": " + LogFileProblem.reason(log, e));
                 spy.close();
                 if (foxglove != null) {
                     foxglove.close();
@@ -214,7 +217,7 @@ final class SpyCommand {
         }
     }
 
-    private static void stop(NetworkSpy spy, ObservationPipeline pipeline, Live live, StreamBus bus) {
+    private static void stop(NetworkSpy spy, ObservationPipeline pipeline, @Nullable Live live, StreamBus bus) {
         spy.close();
         try {
             pipeline.close();
@@ -304,12 +307,12 @@ final class SpyCommand {
     private static final class Summary {
         private final NetworkSpy spy;
         private final ObservationPipeline pipeline;
-        private final Live live;
+        private final @Nullable Live live;
         private long lastMessages;
         private long lastBytes;
         private long lastNanos = System.nanoTime();
 
-        Summary(NetworkSpy spy, ObservationPipeline pipeline, Live live) {
+        Summary(NetworkSpy spy, ObservationPipeline pipeline, @Nullable Live live) {
             this.spy = spy;
             this.pipeline = pipeline;
             this.live = live;

@@ -4,6 +4,8 @@ import java.io.File;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * Which "Player" the demo session runs: a real Player/Stage when one is installed (or named), the
  * recorded one otherwise.
@@ -33,7 +35,7 @@ public record PlayerChoice(String program, boolean recorded) {
         return new PlayerChoice(option, false);
     }
 
-    static Path onPath(String name, String path) {
+    static @Nullable Path onPath(String name, String path) {
         if (path == null) {
             return null;
         }

@@ -3,6 +3,8 @@ package org.stagecraft.foxglove;
 import java.util.Base64;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * Builds the JSON of each Foxglove message the scene writes. Every message carries the capture time
  * as its {@code timestamp}: Foxglove looks transforms up by a message's timestamp, so all of them
@@ -38,7 +40,7 @@ final class FoxgloveMessages {
     }
 
     /** A planar scan at the origin of {@code frame}, beams equally spaced from start to end angle. */
-    static byte[] laserScan(long t, String frame, double startAngle, double endAngle, float[] ranges, double[] dranges,
+    static byte[] laserScan(long t, String frame, double startAngle, double endAngle, float @Nullable [] ranges, double @Nullable [] dranges,
             int[] intensities) {
         JsonOut j = new JsonOut().begin().time("timestamp", t).string("frame_id", frame).pose("pose", 0, 0, 0, 0)
                 .number("start_angle", startAngle).number("end_angle", endAngle).beginArray("ranges");
@@ -80,7 +82,7 @@ final class FoxgloveMessages {
     /** A scene update replacing one entity. */
     static final class Entity {
         private final JsonOut j = new JsonOut();
-        private String open;
+        private @Nullable String open;
         private final java.util.Set<String> done = new java.util.HashSet<>();
 
         Entity(long t, String frame, String id) {

@@ -5,9 +5,11 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.TreeMap;
 import java.util.zip.DataFormatException;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.Blobfinder;
@@ -102,8 +104,8 @@ public final class FoxgloveScene {
 
     /** A map being assembled from its info and tiles. */
     private static final class MapState {
-        MapInterface.Info info;
-        byte[] cells;
+        MapInterface.@Nullable Info info;
+        byte @Nullable [] cells;
     }
 
     /** Takes one bus message: a Player message or a spy diagnostic; anything else is ignored. */
@@ -227,7 +229,7 @@ public final class FoxgloveScene {
         if (Double.isNaN(playerTime) || conn < 0) {
             return false;
         }
-        double[] last = r.lastData.get(List.of(dev.interf(), dev.index(), subtype));
+        double @Nullable [] last = r.lastData.get(List.of(dev.interf(), dev.index(), subtype));
         if (last != null && last[1] != conn && last[0] == playerTime) {
             return true;
         }
@@ -284,7 +286,7 @@ public final class FoxgloveScene {
         r.yaw = yaw;
         publish(FoxgloveNames.robotTopic(r.name, "pose"), FoxgloveSchemas.POSE_IN_FRAME, t,
                 FoxgloveMessages.poseInFrame(t, FoxgloveNames.WORLD, x, y, yaw));
-        double[] last = r.trail.peekLast();
+        double @Nullable [] last = r.trail.peekLast();
         if (last == null || Math.hypot(last[0] - x, last[1] - y) > 0.01) {
             r.trail.addLast(new double[] { x, y, yaw });
             while (r.trail.size() > TRAIL_LENGTH) {
@@ -313,7 +315,7 @@ public final class FoxgloveScene {
 
     /** The robot's body: a box of its position2d geometry (a Pioneer's size until one is seen). */
     private void body(long t, Robot r) {
-        Placement p = r.placements.get(new Device(Position2d.CODE, 0));
+        @Nullable Placement p = r.placements.get(new Device(Position2d.CODE, 0));
         double l = p != null && p.length() > 0 ? p.length() : 0.44, w = p != null && p.width() > 0 ? p.width() : 0.38;
         double h = p != null && p.height() > 0 ? p.height() : 0.22;
         root(t, r);
@@ -361,7 +363,7 @@ public final class FoxgloveScene {
      */
     private void ranger(long t, Robot r, Device dev, double[] ranges) {
         Placement p = r.placement(dev);
-        Ranger.Config c = r.configs.get(dev);
+        Ranger.@Nullable Config c = r.configs.get(dev);
         if (p.elements().size() > 1 && p.elements().size() == ranges.length) {
             double aperture = c != null && c.maxAngle() > c.minAngle() ? c.maxAngle() - c.minAngle() : DEFAULT_APERTURE;
             cones(t, r, dev, ranges, aperture);
@@ -411,7 +413,7 @@ public final class FoxgloveScene {
 
     /** Each bumper as a thin bar where its geometry puts it, red while pressed; nothing until the geometry is seen. */
     private void bumpers(long t, Robot r, Device dev, Bumper.State s) {
-        Bumper.Geom g = r.bumpers.get(dev);
+        Bumper.@Nullable Geom g = r.bumpers.get(dev);
         if (g == null) {
             return;
         }
@@ -483,17 +485,18 @@ public final class FoxgloveScene {
             return;
         }
         int w = m.info.width(), h = m.info.height();
+        byte[] cells = Objects.requireNonNull(m.cells); // set together with m.info
         for (int j = 0; j < tile.height(); j++) {
             for (int i = 0; i < tile.width(); i++) {
                 int src = i + j * tile.width(), col = tile.col() + i, row = tile.row() + j;
                 if (src < data.length && col >= 0 && col < w && row >= 0 && row < h) {
-                    m.cells[col + row * w] = data[src] < 0 ? 0 : data[src] > 0 ? (byte) 100 : (byte) -1;
+                    cells[col + row * w] = data[src] < 0 ? 0 : data[src] > 0 ? (byte) 100 : (byte) -1;
                 }
             }
         }
         publish(FoxgloveNames.deviceTopic(r.name, dev.interf(), dev.index(), "grid"), FoxgloveSchemas.GRID, t,
                 FoxgloveMessages.grid(t, FoxgloveNames.WORLD, m.info.origin().px(), m.info.origin().py(),
-                        m.info.origin().pa(), m.info.scale(), w, m.cells));
+                        m.info.origin().pa(), m.info.scale(), w, cells));
     }
 
     private void publish(String topic, String schema, long t, byte[] json) {

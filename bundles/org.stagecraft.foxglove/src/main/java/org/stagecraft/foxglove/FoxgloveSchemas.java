@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 
 import com.google.gson.Gson;
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * The JSON Schemas of the Foxglove well-known schemas Stagecraft writes, generated from our own
@@ -40,7 +41,7 @@ public final class FoxgloveSchemas {
 
     /** The JSON Schema text of a schema in {@link #NAMES}. */
     public static String text(String name) {
-        String t = TEXTS.get(name);
+        @Nullable String t = TEXTS.get(name);
         if (t == null) {
             throw new IllegalArgumentException("no description of the Foxglove schema " + name);
         }

@@ -3,6 +3,8 @@ package org.stagecraft.mcap;
 import java.util.Map;
 import java.util.Set;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * A chunk of the file, from the chunk index or found by scanning.
  *
@@ -17,5 +19,5 @@ import java.util.Set;
  * @param messageIndexLength  the length of its message index records together (0 when scanned)
  */
 public record ChunkInfo(int seq, long offset, long length, long startTime, long endTime, Set<Integer> channels,
-        Map<Integer, Long> messageCounts, Map<Integer, Long> messageIndexOffsets, long messageIndexLength) {
+        @Nullable Map<Integer, Long> messageCounts, Map<Integer, Long> messageIndexOffsets, long messageIndexLength) {
 }

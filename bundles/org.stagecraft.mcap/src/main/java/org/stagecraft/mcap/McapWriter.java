@@ -17,6 +17,7 @@ import java.util.zip.CRC32;
 
 import com.github.luben.zstd.Zstd;
 import com.github.luben.zstd.ZstdCompressCtx;
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * Writes an MCAP file (https://mcap.dev, major version 0): header, metadata, schemas and channels,
@@ -51,7 +52,7 @@ public final class McapWriter implements AutoCloseable {
     private final CRC32 dataCrc = new CRC32();
     private long position;
     private long lastComplete;
-    private IOException failure;
+    private @Nullable IOException failure;
     private boolean closed;
 
     private final List<Schema> schemas = new ArrayList<>(); // id - 1
@@ -70,7 +71,7 @@ public final class McapWriter implements AutoCloseable {
      */
     private final RecordBuffer chunkOut;
     private final CRC32 chunkCrc = new CRC32();
-    private ZstdCompressCtx zstd;
+    private @Nullable ZstdCompressCtx zstd;
     private final Map<Integer, long[]> chunkIndex = new LinkedHashMap<>(); // channel -> [n, (time, offset)*]
     private long chunkStart = Long.MAX_VALUE;
     private long chunkEnd = Long.MIN_VALUE;

@@ -3,6 +3,8 @@ package org.stagecraft.scene;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * The Robot View's 2D camera: which world point is at the centre of the view, how many metres one pixel
  * spans, and optionally a robot to follow. It also owns the mapping between world metres and window
@@ -16,7 +18,7 @@ public final class Camera {
     public static final double MIN_METRES_PER_PIXEL = 1e-4, MAX_METRES_PER_PIXEL = 10;
 
     private double centreX, centreY, metresPerPixel = 0.02;
-    private RobotId followed;
+    private @Nullable RobotId followed;
     private int width = 1, height = 1;
 
     public Camera() {
@@ -54,12 +56,12 @@ public final class Camera {
         return metresPerPixel;
     }
 
-    public RobotId followed() {
+    public @Nullable RobotId followed() {
         return followed;
     }
 
     /** Keeps the robot in the centre from now on (null: stop following). */
-    public void follow(RobotId robot) {
+    public void follow(@Nullable RobotId robot) {
         followed = robot;
     }
 
@@ -167,7 +169,7 @@ public final class Camera {
         centreX = number(a.get("centreX"), centreX);
         centreY = number(a.get("centreY"), centreY);
         metresPerPixel = clamp(number(a.get("metresPerPixel"), metresPerPixel));
-        String f = a.get("follow");
+        @Nullable String f = a.get("follow");
         followed = f == null || f.isBlank() ? null : new RobotId(f);
     }
 

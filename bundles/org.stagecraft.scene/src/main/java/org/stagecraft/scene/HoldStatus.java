@@ -3,6 +3,7 @@ package org.stagecraft.scene;
 import java.util.EnumMap;
 import java.util.stream.Collectors;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.hold.HoldReason;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.hold.HoldStreams;
@@ -24,7 +25,7 @@ public final class HoldStatus implements AutoCloseable {
     private static final StreamPattern STATE = StreamPattern.exactly(HoldStreams.STATE);
 
     private final Runnable onChange;
-    private volatile HoldState state;
+    private volatile @Nullable HoldState state;
     private final Subscription subscription;
 
     /** @param onChange told (on a bus thread) after each change, e.g. to request a redraw */
@@ -42,21 +43,21 @@ public final class HoldStatus implements AutoCloseable {
         }
     }
 
-    private static HoldState stateOf(StreamMessage m) {
+    private static @Nullable HoldState stateOf(StreamMessage m) {
         return m.payload() instanceof HoldState s ? s : null;
     }
 
     /** The newest state seen, or null if none. */
-    public HoldState state() {
+    public @Nullable HoldState state() {
         return state;
     }
 
     /** What a view draws over the robots: "HELD (suspended in the debugger)", or null when nothing is held. */
-    public String overlayText() {
+    public @Nullable String overlayText() {
         return overlayText(state);
     }
 
-    public static String overlayText(HoldState s) {
+    public static @Nullable String overlayText(@Nullable HoldState s) {
         if (s == null || !s.held()) {
             return null;
         }

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamKey;
@@ -30,7 +31,7 @@ public final class LastMessages implements AutoCloseable {
 
     private final Map<StreamKey, StreamMessage> latest = new LinkedHashMap<>(256, 0.75f, true) {
         @Override
-        protected boolean removeEldestEntry(Map.Entry<StreamKey, StreamMessage> eldest) {
+        protected boolean removeEldestEntry(Map.@Nullable Entry<StreamKey, StreamMessage> eldest) {
             return size() > MAX_STREAMS;
         }
     };

@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamKey;
@@ -27,7 +28,7 @@ public final class LayerFeed implements AutoCloseable {
     private final Runnable onChange;
     private final java.util.Queue<StreamMessage> unseen = new java.util.concurrent.ConcurrentLinkedQueue<>();
     private volatile boolean keepAll;
-    private volatile Subscription subscription;
+    private volatile @Nullable Subscription subscription;
 
     /** @param onChange told (on a bus thread) after each new message, e.g. to request a redraw */
     public LayerFeed(Runnable onChange) {

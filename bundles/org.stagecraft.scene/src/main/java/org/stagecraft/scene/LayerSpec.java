@@ -4,6 +4,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Objects;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.streams.StreamPattern;
 
 /**
@@ -86,7 +87,7 @@ public record LayerSpec(String id, String rendererId, String name, StreamPattern
     }
 
     private static String required(Map<String, String> a, String key) {
-        String v = a.get(key);
+        @Nullable String v = a.get(key);
         if (v == null) {
             throw new IllegalArgumentException("layer attribute '" + key + "' is missing");
         }

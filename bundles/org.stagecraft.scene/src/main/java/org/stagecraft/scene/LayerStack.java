@@ -5,6 +5,8 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /** A view's layers, kept in draw order (ascending {@link LayerSpec#order()}, then insertion). */
 public final class LayerStack {
     private final List<LayerSpec> layers = new CopyOnWriteArrayList<>();
@@ -30,7 +32,7 @@ public final class LayerStack {
         return layers.removeIf(l -> l.id().equals(id));
     }
 
-    public LayerSpec get(String id) {
+    public @Nullable LayerSpec get(String id) {
         for (LayerSpec l : layers) {
             if (l.id().equals(id)) {
                 return l;

@@ -1,5 +1,6 @@
 package org.stagecraft.scene;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.spy.proxy.SpyMessage;
@@ -11,7 +12,7 @@ public final class Payloads {
     }
 
     /** The body, or null when the payload is no Player message (or its decoding failed). */
-    public static MessageBody body(StreamMessage m) {
+    public static @Nullable MessageBody body(StreamMessage m) {
         Object p = m.payload();
         if (p instanceof SpyMessage s) {
             p = s.message();

@@ -8,6 +8,7 @@ import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.Bumper;
 import org.stagecraft.player.msg.Fiducial;
@@ -120,7 +121,7 @@ public final class WorldModel {
 
     /** The robot's state; a robot never seen stands at the origin. */
     public RobotState robot(RobotId id) {
-        Track t = robots.get(id);
+        @Nullable Track t = robots.get(id);
         Mount body = mount(new DeviceAddress(id, Position2d.CODE, 0));
         return t == null ? new RobotState(id, Pose2.ORIGIN, Pose2.ORIGIN, false, List.of(), body, false) : t.snapshot(body);
     }
@@ -131,7 +132,7 @@ public final class WorldModel {
     }
 
     /** The device's last geometry message as decoded (e.g. Bumper.Geom), or null if none was seen. */
-    public MessageBody geometry(DeviceAddress dev) {
+    public @Nullable MessageBody geometry(DeviceAddress dev) {
         return geometries.get(dev);
     }
 
@@ -172,7 +173,7 @@ public final class WorldModel {
             velocity = Pose2.of(s.vel());
             stall = s.stall() != 0;
             seen = true;
-            Pose2 last = trail.peekLast();
+            @Nullable Pose2 last = trail.peekLast();
             // a robot standing still adds nothing to its trail
             if (last == null || Math.hypot(last.x() - pose.x(), last.y() - pose.y()) > 0.01) {
                 trail.addLast(pose);

@@ -8,6 +8,8 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * A subscription with its buffer and its drain task. Publishers call {@link #offer}, lock-free and
  * bounded; at most one drain task runs (or is queued on the executor) at a time.
@@ -23,12 +25,12 @@ final class BusSubscription implements Subscription {
     private final boolean wantsReleases;
 
     /** Lossless: FIFO with an explicit size, never more than {@code capacity} messages. */
-    private final ConcurrentLinkedQueue<StreamMessage> fifo;
+    private final @Nullable ConcurrentLinkedQueue<StreamMessage> fifo;
     private final AtomicInteger size = new AtomicInteger();
     /** Latest-value: the newest undelivered message per stream. */
-    private final ConcurrentHashMap<StreamKey, StreamMessage> latest;
+    private final @Nullable ConcurrentHashMap<StreamKey, StreamMessage> latest;
     /** Latest-value: releases, told after the pending messages (a lossless FIFO carries them in line). */
-    private final ConcurrentLinkedQueue<Release> releases;
+    private final @Nullable ConcurrentLinkedQueue<Release> releases;
 
     /** A release in the buffer: never counted against the capacity, nor as delivered or dropped. */
     private record Release(String address, Set<StreamKey> streams) {
@@ -38,7 +40,7 @@ final class BusSubscription implements Subscription {
     private final LongAdder delivered = new LongAdder();
     private final LongAdder dropped = new LongAdder();
     private final LongAdder failures = new LongAdder();
-    private volatile Throwable lastFailure;
+    private volatile @Nullable Throwable lastFailure;
     private volatile boolean closed;
 
     BusSubscription(StreamBus bus, StreamPattern pattern, DeliveryPolicy policy, StreamConsumer consumer) {
@@ -181,7 +183,7 @@ final class BusSubscription implements Subscription {
             if (closed) {
                 break;
             }
-            StreamMessage m = latest.remove(k);
+            @Nullable StreamMessage m = latest.remove(k);
             if (m != null) {
                 deliver(m);
                 n++;
@@ -267,7 +269,7 @@ final class BusSubscription implements Subscription {
     }
 
     @Override
-    public Throwable lastFailure() {
+    public @Nullable Throwable lastFailure() {
         return lastFailure;
     }
 

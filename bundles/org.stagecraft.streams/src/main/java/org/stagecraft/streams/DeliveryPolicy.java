@@ -1,5 +1,7 @@
 package org.stagecraft.streams;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * How a subscription's messages are buffered between the publisher and the consumer. Neither policy
  * ever blocks the publisher.
@@ -55,7 +57,7 @@ public final class DeliveryPolicy {
     }
 
     @Override
-    public boolean equals(Object o) {
+    public boolean equals(@Nullable Object o) {
         return o instanceof DeliveryPolicy p && p.kind == kind && p.capacity == capacity;
     }
 

@@ -17,6 +17,8 @@ import java.util.concurrent.atomic.LongAdder;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * Connects publishers of {@link StreamMessage}s (the Network Spy's decode thread, replay, stream
  * processors) with consumers (views, the logger, processors).
@@ -47,7 +49,7 @@ public final class StreamBus implements AutoCloseable {
     static final int BATCH = 256;
 
     private final Executor executor;
-    private final ExecutorService owned;
+    private final @Nullable ExecutorService owned;
     private final CopyOnWriteArrayList<BusSubscription> subscriptions = new CopyOnWriteArrayList<>();
     /** Matching subscriptions per key; replaced (not cleared) on every change, so no stale entry survives. */
     private volatile ConcurrentHashMap<StreamKey, BusSubscription[]> routes = new ConcurrentHashMap<>();
@@ -75,9 +77,10 @@ public final class StreamBus implements AutoCloseable {
      * cost the spy's process more CPU than observing the messages.
      */
     public StreamBus() {
-        this.owned = new ThreadPoolExecutor(0, Integer.MAX_VALUE, IDLE_SECONDS, TimeUnit.SECONDS, new SynchronousQueue<>(),
-                Thread.ofPlatform().daemon().name("stream-bus-", 0).factory());
-        this.executor = owned;
+        ExecutorService own = new ThreadPoolExecutor(0, Integer.MAX_VALUE, IDLE_SECONDS, TimeUnit.SECONDS,
+                new SynchronousQueue<>(), Thread.ofPlatform().daemon().name("stream-bus-", 0).factory());
+        this.owned = own;
+        this.executor = own;
     }
 
     /** How long an idle delivery thread of the default bus waits for the next drain task before it ends. */
@@ -104,7 +107,7 @@ public final class StreamBus implements AutoCloseable {
         }
         published.increment();
         ConcurrentHashMap<StreamKey, BusSubscription[]> table = routes;
-        BusSubscription[] route = table.get(key);
+        BusSubscription @Nullable [] route = table.get(key);
         if (route == null) {
             route = learn(key, table);
         }
@@ -189,7 +192,7 @@ public final class StreamBus implements AutoCloseable {
                 byAddress.computeIfAbsent(key.source(), a -> new HashSet<>()).add(key);
                 byAddress.computeIfAbsent(key.destination(), a -> new HashSet<>()).add(key);
             }
-            BusSubscription[] cached = table.putIfAbsent(key, route);
+            BusSubscription @Nullable [] cached = table.putIfAbsent(key, route);
             if (cached != null) {
                 route = cached;
             }
@@ -221,12 +224,12 @@ public final class StreamBus implements AutoCloseable {
         Objects.requireNonNull(address, "address");
         List<StreamKey> gone = new ArrayList<>();
         synchronized (streamLock) {
-            Set<StreamKey> keys = byAddress.remove(address);
+            @Nullable Set<StreamKey> keys = byAddress.remove(address);
             if (keys != null) {
                 for (StreamKey k : keys) {
                     known.remove(k);
                     String other = address.equals(k.source()) ? k.destination() : k.source();
-                    Set<StreamKey> ofOther = byAddress.get(other);
+                    @Nullable Set<StreamKey> ofOther = byAddress.get(other);
                     if (ofOther != null && ofOther.remove(k) && ofOther.isEmpty()) {
                         byAddress.remove(other);
                     }

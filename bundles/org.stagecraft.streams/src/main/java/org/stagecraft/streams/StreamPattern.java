@@ -2,6 +2,8 @@ package org.stagecraft.streams;
 
 import java.util.Objects;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * An immutable filter over {@link StreamKey}s; every field may be a wildcard. Addresses are matched
  * with globs in which {@code '*'} stands for any run of characters (e.g. {@code "*:6665"}); numeric
@@ -170,7 +172,7 @@ public final class StreamPattern {
     }
 
     @Override
-    public boolean equals(Object o) {
+    public boolean equals(@Nullable Object o) {
         return o instanceof StreamPattern p && p.source.equals(source) && p.destination.equals(destination)
                 && p.messageType == messageType && p.deviceType == deviceType && p.index == index
                 && p.subtype == subtype;

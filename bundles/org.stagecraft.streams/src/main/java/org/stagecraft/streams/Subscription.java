@@ -1,5 +1,7 @@
 package org.stagecraft.streams;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * A consumer's subscription to every stream matching a pattern, existing or future. Counters are
  * cumulative and may be read from any thread.
@@ -22,7 +24,7 @@ public interface Subscription extends AutoCloseable {
     long failures();
 
     /** The last exception the consumer threw, or {@code null}. */
-    default Throwable lastFailure() {
+    default @Nullable Throwable lastFailure() {
         return null;
     }
 

@@ -1,5 +1,6 @@
 package org.stagecraft.ui;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
 import org.eclipse.ui.IFolderLayout;
 import org.eclipse.ui.IPageLayout;
 import org.eclipse.ui.IPerspectiveFactory;
@@ -17,6 +18,7 @@ public class StagecraftPerspective implements IPerspectiveFactory {
     /** The Robot View (org.stagecraft.views); by id, so that this bundle does not depend on the GL one. */
     public static final String ROBOT_VIEW_ID = "org.stagecraft.views.robot";
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void createInitialLayout(IPageLayout layout) {
         String editorArea = layout.getEditorArea();

@@ -2,6 +2,7 @@ package org.stagecraft.views;
 
 import java.nio.FloatBuffer;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.scene.LayerSpec;
 import org.stagecraft.scene.shapes.FloatList;
 
@@ -25,7 +26,7 @@ public final class GlBatch {
     private final FloatList vertices = new FloatList();
     private Tint tint;
     private float size = 1;
-    private FloatBuffer staging;
+    private @Nullable FloatBuffer staging;
     private int vbo, uploaded;
 
     /** @param mode GL_TRIANGLES, GL_LINES or GL_POINTS */

@@ -1,5 +1,6 @@
 package org.stagecraft.views;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Composite;
 
@@ -13,18 +14,20 @@ import com.jogamp.opengl.swt.GLCanvas;
  * pick a 10-bit visual), double buffered.
  */
 public final class GlSurfaces {
-    private static GLProfile profile;
+    private static @Nullable GLProfile profile;
 
     private GlSurfaces() {
     }
 
     /** The GL2 profile; initialises JOGL (loads its natives) on first use. */
     public static synchronized GLProfile profile() {
-        if (profile == null) {
+        GLProfile p = profile;
+        if (p == null) {
             GLProfile.initSingleton();
-            profile = GLProfile.get(GLProfile.GL2);
+            p = GLProfile.get(GLProfile.GL2);
+            profile = p;
         }
-        return profile;
+        return p;
     }
 
     public static GLCapabilities capabilities() {

@@ -21,6 +21,7 @@ import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.core.extensions.ExtensionReader;
 import org.stagecraft.core.extensions.ExtensionXml;
 import org.stagecraft.scene.LayerSpec;
@@ -91,7 +92,7 @@ public final class RendererExtensionRegistry {
             Map<String, Contribution> contributions, Consumer<IStatus> problems) {
         List<Map.Entry<LayerSpec, StreamRenderer>> out = new ArrayList<>();
         for (LayerSpec l : layers) {
-            Contribution c = contributions.get(l.rendererId());
+            @Nullable Contribution c = contributions.get(l.rendererId());
             if (c == null) {
                 problems.accept(Status.warning("Robot View layer '" + l.name() + "': no renderer '" + l.rendererId()
                         + "' is installed"));

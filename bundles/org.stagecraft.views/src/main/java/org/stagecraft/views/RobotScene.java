@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.scene.Camera;
 import org.stagecraft.scene.LayerFeed;
 import org.stagecraft.scene.LayerSpec;
@@ -36,14 +37,14 @@ public final class RobotScene implements AutoCloseable {
     private final Map<String, LayerFeed> feeds = new ConcurrentHashMap<>();
     private final List<StreamRenderer> retired = new ArrayList<>();
     private final Runnable onChange;
-    private StreamBus bus;
-    private SceneFeed sceneFeed;
+    private @Nullable StreamBus bus;
+    private @Nullable SceneFeed sceneFeed;
     private boolean grid = true;
     private final FloatList minor = new FloatList(), major = new FloatList();
-    private GLUT glut;
+    private @Nullable GLUT glut;
     private long frames;
     /** Text drawn over everything (e.g. "HELD (suspended in the debugger)"), or null. */
-    private volatile String overlay;
+    private volatile @Nullable String overlay;
 
     /** @param onChange told (on bus threads) whenever new data arrived: the view schedules a redraw */
     public RobotScene(WorldModel world, Camera camera, Runnable onChange) {
@@ -73,10 +74,10 @@ public final class RobotScene implements AutoCloseable {
         disconnect();
         bus = newBus;
         if (feedWorld) {
-            sceneFeed = new SceneFeed(bus, world, onChange);
+            sceneFeed = new SceneFeed(newBus, world, onChange);
         }
         for (LayerSpec l : layers.inDrawOrder()) {
-            feeds.get(l.id()).subscribe(bus, l.pattern(), renderers.get(l.id()).deliveryPolicy());
+            feeds.get(l.id()).subscribe(newBus, l.pattern(), renderers.get(l.id()).deliveryPolicy());
         }
     }
 
@@ -106,17 +107,18 @@ public final class RobotScene implements AutoCloseable {
         renderers.put(spec.id(), renderer);
         feeds.put(spec.id(), feed);
         layers.put(spec);
+        StreamBus bus = this.bus;
         if (bus != null) {
             feed.subscribe(bus, spec.pattern(), renderer.deliveryPolicy());
         }
     }
 
     public synchronized void removeLayer(String id) {
-        LayerFeed f = feeds.remove(id);
+        @Nullable LayerFeed f = feeds.remove(id);
         if (f != null) {
             f.close();
         }
-        StreamRenderer r = renderers.remove(id);
+        @Nullable StreamRenderer r = renderers.remove(id);
         if (r != null) {
             retired.add(r); // its GPU data is freed at the next frame, when a context is current
         }
@@ -133,6 +135,7 @@ public final class RobotScene implements AutoCloseable {
             throw new IllegalArgumentException("layer '" + spec.id() + "' keeps its renderer " + old.rendererId());
         }
         layers.put(spec);
+        StreamBus bus = this.bus;
         if (bus != null && !old.pattern().equals(spec.pattern())) {
             feeds.get(spec.id()).subscribe(bus, spec.pattern(), renderers.get(spec.id()).deliveryPolicy());
         }
@@ -152,11 +155,11 @@ public final class RobotScene implements AutoCloseable {
     }
 
     /** Text to draw over the robots, top left, in red (null: none); e.g. the robot hold's state. */
-    public void overlay(String text) {
+    public void overlay(@Nullable String text) {
         overlay = text;
     }
 
-    public String overlay() {
+    public @Nullable String overlay() {
         return overlay;
     }
 
@@ -196,8 +199,8 @@ public final class RobotScene implements AutoCloseable {
             drawGrid(gl);
         }
         for (LayerSpec l : layers.inDrawOrder()) {
-            StreamRenderer r = renderers.get(l.id());
-            LayerFeed f = feeds.get(l.id());
+            @Nullable StreamRenderer r = renderers.get(l.id());
+            @Nullable LayerFeed f = feeds.get(l.id());
             if (!l.visible() || r == null || f == null) {
                 continue;
             }

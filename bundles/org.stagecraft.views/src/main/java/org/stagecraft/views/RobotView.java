@@ -2,11 +2,14 @@ package org.stagecraft.views;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.function.Consumer;
 
 import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Platform;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.action.Action;
 import org.eclipse.jface.action.IAction;
 import org.eclipse.jface.action.IMenuManager;
@@ -61,24 +64,25 @@ public class RobotView extends ViewPart {
 
     private static final ILog LOG = ILog.of(Platform.getBundle("org.stagecraft.views"));
 
-    private ViewSetup restored;
+    private @Nullable ViewSetup restored;
     /** The source chosen (may be a log that is not open now); {@link #bus} is what the view follows. */
     private String sourceId = BusSources.LIVE;
-    private StreamBus bus;
-    private AutoCloseable sourcesListener;
-    private SharedWorld shared;
-    private AutoCloseable worldListener;
-    private RobotScene scene;
+    private @Nullable StreamBus bus;
+    private @Nullable AutoCloseable sourcesListener;
+    private @Nullable SharedWorld shared;
+    private @Nullable AutoCloseable worldListener;
+    private @Nullable RobotScene scene;
     /** Whether the source's robots are held (robot hold), drawn over the robots. */
-    private HoldStatus holdStatus;
-    private GLCanvas canvas;
-    private RedrawThrottle redraw;
-    private Consumer<FramePixels> readback;
+    private @Nullable HoldStatus holdStatus;
+    private @Nullable GLCanvas canvas;
+    private @Nullable RedrawThrottle redraw;
+    private @Nullable Consumer<FramePixels> readback;
     private int dragX, dragY;
     private boolean dragging;
     /** A new view (no saved camera) follows the first robot it sees, wherever in the world it is. */
     private boolean followFirstRobot;
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void init(IViewSite site, IMemento memento) throws PartInitException {
         super.init(site, memento);
@@ -91,11 +95,13 @@ public class RobotView extends ViewPart {
         }
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void createPartControl(Composite parent) {
         canvas = GlSurfaces.create(parent);
         redraw = new RedrawThrottle(parent.getDisplay(), 1000 / MAX_FPS, this::drawNow);
-        bus = chosenBus();
+        StreamBus bus = chosenBus();
+        this.bus = bus;
         shared = SharedWorld.of(bus);
         scene = new RobotScene(shared.world(), new Camera(), redraw::request);
         worldListener = shared.listen(redraw::request);
@@ -122,12 +128,12 @@ public class RobotView extends ViewPart {
     }
 
     /** The bus the view follows now. */
-    public StreamBus bus() {
+    public @Nullable StreamBus bus() {
         return bus;
     }
 
     /** Follows the source with that id (Live while it is not open). UI thread. */
-    public void followSource(String id) {
+    public void followSource(@Nullable String id) {
         sourceId = id == null ? BusSources.LIVE : id;
         attach();
     }
@@ -145,9 +151,9 @@ public class RobotView extends ViewPart {
         if (target != bus) {
             bus = target;
             closeWorldListener();
-            shared = SharedWorld.of(bus);
+            shared = SharedWorld.of(target);
             worldListener = shared.listen(redraw::request);
-            scene.reconnect(bus, shared.world());
+            scene.reconnect(target, shared.world());
             followHolds();
             applySetup(setup()); // new renderers and feeds: nothing drawn from the old source stays
             followFirstRobot = true; // the new source's robots may have other addresses
@@ -161,11 +167,11 @@ public class RobotView extends ViewPart {
         if (holdStatus != null) {
             holdStatus.close();
         }
-        holdStatus = new HoldStatus(bus, redraw::request);
+        holdStatus = new HoldStatus(Objects.requireNonNull(bus), redraw::request);
     }
 
     /** What the view writes over the robots about the robot hold, or null (for tests). */
-    public String holdText() {
+    public @Nullable String holdText() {
         return holdStatus == null ? null : holdStatus.overlayText();
     }
 
@@ -178,7 +184,7 @@ public class RobotView extends ViewPart {
                 .orElse("Source: " + sourceId + " is not open; showing Live"));
     }
 
-    public RobotScene scene() {
+    public @Nullable RobotScene scene() {
         return scene;
     }
 
@@ -211,6 +217,7 @@ public class RobotView extends ViewPart {
         scene.updateLayer(spec);
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void saveState(IMemento memento) {
         ViewMemento.write(memento, setup());
@@ -218,7 +225,7 @@ public class RobotView extends ViewPart {
     }
 
     /** Draws a frame now (UI thread) and returns what it drew, read back from the back buffer. */
-    public FramePixels capture() {
+    public @Nullable FramePixels capture() {
         FramePixels[] out = new FramePixels[1];
         readback = p -> out[0] = p;
         try {
@@ -282,11 +289,13 @@ public class RobotView extends ViewPart {
     }
 
     private final class Drawer implements GLEventListener {
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void init(GLAutoDrawable d) {
             d.getGL().setSwapInterval(0); // frames are paced by the data, not the (virtual) display
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void display(GLAutoDrawable d) {
             GL2 gl = d.getGL().getGL2();
@@ -299,11 +308,13 @@ public class RobotView extends ViewPart {
             }
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void reshape(GLAutoDrawable d, int x, int y, int w, int h) {
             // the scene sets the viewport every frame
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void dispose(GLAutoDrawable d) {
             scene.disposeGl(d.getGL().getGL2());
@@ -363,7 +374,7 @@ public class RobotView extends ViewPart {
             MenuManager follow = new MenuManager("Follow");
             follow.add(action("None", IAction.AS_RADIO_BUTTON, scene.camera().followed() == null, () -> scene.camera().follow(null)));
             for (RobotState r : scene.world().robots()) {
-                follow.add(action(r.id().address(), IAction.AS_RADIO_BUTTON, r.id().equals(scene.camera().followed()),
+                follow.add(action(r.id().address(), IAction.AS_RADIO_BUTTON, Objects.equals(r.id(), scene.camera().followed()),
                         () -> scene.camera().follow(r.id())));
             }
             m.add(follow);

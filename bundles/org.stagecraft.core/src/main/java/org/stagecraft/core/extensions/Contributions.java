@@ -8,6 +8,7 @@ import org.eclipse.core.runtime.IExtensionRegistry;
 import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Platform;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.core.codec.DecoderExtensionRegistry;
 import org.stagecraft.core.streams.StreamProcessorExtensionRegistry;
 import org.stagecraft.core.streams.StreamProcessorExtensionRegistry.Descriptor;
@@ -27,7 +28,7 @@ import org.stagecraft.streams.StreamProcessors;
  */
 public final class Contributions {
     private static final String BUNDLE = "org.stagecraft.core";
-    private static Contributions workbench;
+    private static @Nullable Contributions workbench;
 
     private final CodecRegistry codecs;
     private final List<Descriptor> processors;
@@ -41,11 +42,13 @@ public final class Contributions {
 
     /** The running workbench's contributions, read on first use; problems go to the Error Log. */
     public static synchronized Contributions workbench() {
-        if (workbench == null) {
+        Contributions w = workbench;
+        if (w == null) {
             ILog log = ILog.of(Platform.getBundle(BUNDLE));
-            workbench = load(Platform.getExtensionRegistry(), log::log);
+            w = load(Platform.getExtensionRegistry(), log::log);
+            workbench = w;
         }
-        return workbench;
+        return w;
     }
 
     /** Reads the contributions of {@code extensions}; every problem, now or when processors start, goes to {@code problems}. */

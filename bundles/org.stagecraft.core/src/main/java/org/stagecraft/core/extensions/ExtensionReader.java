@@ -9,6 +9,7 @@ import org.eclipse.core.runtime.IConfigurationElement;
 import org.eclipse.core.runtime.IExtensionRegistry;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Status;
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * Reads the elements of one extension point for a registry, the same way for all four of
@@ -58,7 +59,7 @@ public final class ExtensionReader {
         return Status.error(where(contributor, point, element, id) + ": " + message, cause);
     }
 
-    private static String where(String contributor, String point, String element, String id) {
+    private static String where(String contributor, String point, String element, @Nullable String id) {
         return "plug-in " + contributor + ", extension " + point + ", element <" + element + ">"
                 + (id == null ? "" : " id '" + id + "'");
     }
@@ -66,7 +67,7 @@ public final class ExtensionReader {
     /** One element being read: its attributes, trimmed, and what it names. */
     public final class Element {
         private final IConfigurationElement raw;
-        private String id;
+        private @Nullable String id;
 
         private Element(IConfigurationElement raw) {
             this.raw = raw;
@@ -88,7 +89,7 @@ public final class ExtensionReader {
         }
 
         /** The id once {@link #id(String)} read it, else null. */
-        public String idOrNull() {
+        public @Nullable String idOrNull() {
             return id;
         }
 
@@ -105,7 +106,7 @@ public final class ExtensionReader {
         }
 
         /** The attribute, trimmed; null when absent or blank. */
-        public String attribute(String attribute) {
+        public @Nullable String attribute(String attribute) {
             String s = raw.getAttribute(attribute);
             return s == null || s.isBlank() ? null : s.trim();
         }

@@ -2,6 +2,7 @@ package org.stagecraft.core.streams;
 
 import java.util.Set;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.core.extensions.Contributions;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
@@ -20,8 +21,8 @@ import org.stagecraft.streams.Subscription;
  * to its UI thread itself.
  */
 public final class WorkbenchBus {
-    private static StreamBus bus;
-    private static StreamProcessors processors;
+    private static @Nullable StreamBus bus;
+    private static @Nullable StreamProcessors processors;
 
     private WorkbenchBus() {
     }
@@ -52,14 +53,16 @@ public final class WorkbenchBus {
 
     /** The bus, with the contributed processors started on it; a new one (and new processors) if the last was closed. */
     public static synchronized StreamBus get() {
-        if (bus == null || bus.isClosed()) {
+        StreamBus b = bus;
+        if (b == null || b.isClosed()) {
             if (processors != null) {
                 processors.stopAll(); // their bus is gone; stop() frees what else they hold
             }
-            bus = new StreamBus();
-            processors = Contributions.workbench().startProcessors(bus);
+            b = new StreamBus();
+            bus = b;
+            processors = Contributions.workbench().startProcessors(b);
         }
-        return bus;
+        return b;
     }
 
     /** The ids of the processors running on the workbench bus. */

@@ -3,6 +3,7 @@ package org.stagecraft.demo.ui;
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.runtime.preferences.IEclipsePreferences;
 import org.eclipse.core.runtime.preferences.InstanceScope;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PartInitException;
 import org.eclipse.ui.ide.IDE;
@@ -22,7 +23,7 @@ final class DemoEditors {
     }
 
     /** @return what happened to the Session Log, for the status */
-    static String open(IWorkbenchPage page, IFile cfg, IFile spyLog) {
+    static String open(IWorkbenchPage page, IFile cfg, @Nullable IFile spyLog) {
         try {
             IDE.openEditor(page, cfg, TEXT_EDITOR, false);
         } catch (PartInitException e) {

@@ -16,6 +16,7 @@ import org.eclipse.debug.core.ILaunchConfiguration;
 import org.eclipse.debug.core.ILaunchConfigurationType;
 import org.eclipse.debug.core.ILaunchConfigurationWorkingCopy;
 import org.eclipse.debug.core.ILaunchManager;
+import org.eclipse.jdt.annotation.Nullable;
 import org.osgi.service.prefs.BackingStoreException;
 import org.stagecraft.demo.PlayerChoice;
 import org.stagecraft.tools.session.SessionConfig;
@@ -40,7 +41,7 @@ final class DemoLaunch {
 
     static final String STROLL = "programs/sunday_stroll.py";
 
-    static ILaunchConfiguration configure(IProject project, PlayerChoice player, Path recording, String python)
+    static ILaunchConfiguration configure(IProject project, PlayerChoice player, Path recording, @Nullable String python)
             throws CoreException {
         try {
             List<ToolDefinition> tools = new ArrayList<>(ToolPreferences.tools());

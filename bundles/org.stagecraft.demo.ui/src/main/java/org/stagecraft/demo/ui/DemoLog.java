@@ -3,6 +3,7 @@ package org.stagecraft.demo.ui;
 import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Status;
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * The demo's progress, in the Error Log and on the product's standard output: whoever started
@@ -25,7 +26,7 @@ final class DemoLog {
         System.out.println("stagecraft demo: " + message);
     }
 
-    static void error(String message, Throwable cause) {
+    static void error(String message, @Nullable Throwable cause) {
         LOG.log(new Status(IStatus.ERROR, BUNDLE, message, cause));
         System.out.println("stagecraft demo: ERROR " + message);
     }

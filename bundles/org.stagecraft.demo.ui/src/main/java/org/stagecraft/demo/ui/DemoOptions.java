@@ -2,6 +2,7 @@ package org.stagecraft.demo.ui;
 
 import java.nio.file.Path;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.demo.PlayerChoice;
 
 /**
@@ -18,7 +19,7 @@ import org.stagecraft.demo.PlayerChoice;
  * @param python           the Python interpreter for the robot program with a real Player (one with
  *                         pint, set up by {@code ./stagecraft demo}), or null for the preference
  */
-record DemoOptions(boolean enabled, Path status, int exitAfterSeconds, String player, Path recording, String python) {
+record DemoOptions(boolean enabled, @Nullable Path status, int exitAfterSeconds, String player, @Nullable Path recording, @Nullable String python) {
     static final String PREFIX = "stagecraft.demo";
 
     static DemoOptions fromSystemProperties() {

@@ -21,6 +21,7 @@ import org.eclipse.debug.core.ILaunch;
 import org.eclipse.debug.core.DebugException;
 import org.eclipse.debug.core.ILaunchConfiguration;
 import org.eclipse.debug.core.model.IProcess;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.ui.IWorkbenchWindow;
@@ -50,8 +51,8 @@ final class DemoRun {
     private final Display display;
     private final DemoStatus status;
     private volatile List<RobotView> views = List.of();
-    private volatile Path spyLog;
-    private volatile ILaunch launch;
+    private volatile @Nullable Path spyLog;
+    private volatile @Nullable ILaunch launch;
     private volatile boolean failed;
     private final PartReports reports = new PartReports();
 
@@ -76,8 +77,8 @@ final class DemoRun {
             status.put("phase", "preparing");
             IProject project = DemoProject.install(monitor);
             status.put("project", project.getLocation().toString());
-            Path recording = options.recording() != null ? options.recording()
-                    : project.getFile(DemoProject.RECORDING).getLocation().toPath();
+            Path chosen = options.recording();
+            Path recording = chosen != null ? chosen : project.getFile(DemoProject.RECORDING).getLocation().toPath();
             TimedRecording rec = TimedRecording.read(recording);
             DemoLog.info(String.format(Locale.ROOT, "recording %s: %d connection(s), %.1f s", recording,
                     rec.connections().size(), rec.connections().stream().mapToDouble(TimedConnection::length).max().orElse(0)));
@@ -160,7 +161,7 @@ final class DemoRun {
             return out;
         }
         for (IProcess p : l.getProcesses()) {
-            Map<String, Object> m = new LinkedHashMap<>();
+            Map<String, @Nullable Object> m = new LinkedHashMap<>();
             m.put("label", p.getLabel());
             m.put("terminated", p.isTerminated());
             if (p.isTerminated()) {
@@ -197,7 +198,7 @@ final class DemoRun {
         display.timerExec(SAMPLE_MILLIS, this::sampleEverySecond);
     }
 
-    private synchronized void fail(String message, Throwable cause) {
+    private synchronized void fail(String message, @Nullable Throwable cause) {
         if (failed) {
             return;
         }

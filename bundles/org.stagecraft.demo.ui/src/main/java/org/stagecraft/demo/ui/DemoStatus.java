@@ -9,6 +9,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.tools.ui.view.ToolsModel;
 import org.stagecraft.views.FramePixels;
 import org.stagecraft.views.RobotView;
@@ -25,22 +26,22 @@ import com.google.gson.GsonBuilder;
 final class DemoStatus {
     private static final int MAX_SAMPLES = 600;
 
-    private final Path file;
+    private final @Nullable Path file;
     private final long start = System.nanoTime();
-    private final Map<String, Object> fields = new LinkedHashMap<>();
+    private final Map<String, @Nullable Object> fields = new LinkedHashMap<>();
     private final List<Map<String, Object>> samples = new ArrayList<>();
 
-    DemoStatus(Path file) {
+    DemoStatus(@Nullable Path file) {
         this.file = file;
         fields.put("phase", "starting");
     }
 
-    synchronized void put(String key, Object value) {
+    synchronized void put(String key, @Nullable Object value) {
         fields.put(key, value);
         write();
     }
 
-    synchronized void sample(List<RobotView> views, Path spyLog) {
+    synchronized void sample(List<RobotView> views, @Nullable Path spyLog) {
         Map<String, Object> s = new LinkedHashMap<>();
         s.put("t", Math.round(seconds() * 10) / 10.0);
         s.put("frames", views.stream().map(v -> v.frames()).toList());
@@ -56,7 +57,7 @@ final class DemoStatus {
     }
 
     /** The final look at the views: frames so far, then one frame read back and its coloured pixels. */
-    synchronized void finish(List<RobotView> views, Path spyLog) {
+    synchronized void finish(List<RobotView> views, @Nullable Path spyLog) {
         sample(views, spyLog);
         List<Map<String, Object>> out = new ArrayList<>();
         for (RobotView v : views) {
@@ -79,7 +80,7 @@ final class DemoStatus {
         return (System.nanoTime() - start) / 1e9;
     }
 
-    private static long size(Path p) {
+    private static long size(@Nullable Path p) {
         try {
             return p == null ? -1 : Files.size(p);
         } catch (IOException e) {

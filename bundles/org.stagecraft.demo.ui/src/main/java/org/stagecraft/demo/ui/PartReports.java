@@ -6,6 +6,7 @@ import java.util.List;
 import org.eclipse.debug.core.model.IProcess;
 import org.eclipse.debug.core.model.IStreamMonitor;
 import org.eclipse.debug.core.model.IStreamsProxy;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.tools.ui.launch.SessionParts;
 
 /**
@@ -57,7 +58,7 @@ final class PartReports {
         }
     }
 
-    private static IStreamsProxy streams(SessionParts parts, String name) {
+    private static @Nullable IStreamsProxy streams(SessionParts parts, String name) {
         IProcess p = parts.part(name);
         IStreamsProxy streams = p == null ? null : p.getStreamsProxy();
         if (streams == null) {

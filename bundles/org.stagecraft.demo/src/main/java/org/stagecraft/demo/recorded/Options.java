@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * Command-line options of the recorded peers: {@code --name value} and {@code -p value} pairs, the
@@ -40,7 +41,7 @@ final class Options {
     }
 
     int integer(String name, int fallback) {
-        String v = named.get(name);
+        @Nullable String v = named.get(name);
         try {
             return v == null ? fallback : Integer.parseInt(v);
         } catch (NumberFormatException e) {
@@ -53,7 +54,7 @@ final class Options {
     }
 
     Path recording() {
-        String v = named.getOrDefault("--recording", env.get(RECORDING_VARIABLE));
+        @Nullable String v = named.getOrDefault("--recording", env.get(RECORDING_VARIABLE));
         if (v == null || v.isBlank()) {
             throw new IllegalArgumentException("no recording given (--recording FILE or " + RECORDING_VARIABLE + ")");
         }

@@ -5,6 +5,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.LongAdder;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.java_websocket.WebSocket;
 import org.java_websocket.WebSocketImpl;
 import org.java_websocket.exceptions.WebsocketNotConnectedException;
@@ -82,12 +83,12 @@ final class ClientSession {
         }
     }
 
-    Integer subscriptionOf(int channelId) {
+    @Nullable Integer subscriptionOf(int channelId) {
         return subscriptionOfChannel.get(channelId);
     }
 
     /** @return why the subscription is refused, or null when it is made */
-    String subscribe(int subscriptionId, int channelId) {
+    @Nullable String subscribe(int subscriptionId, int channelId) {
         if (channelOfSubscription.containsKey(subscriptionId)) {
             return "subscription id " + Integer.toUnsignedString(subscriptionId) + " is already in use";
         }
@@ -101,8 +102,8 @@ final class ClientSession {
     }
 
     /** @return why not, or null when it is undone */
-    String unsubscribe(int subscriptionId) {
-        Integer channel = channelOfSubscription.remove(subscriptionId);
+    @Nullable String unsubscribe(int subscriptionId) {
+        @Nullable Integer channel = channelOfSubscription.remove(subscriptionId);
         if (channel == null) {
             return "no subscription " + Integer.toUnsignedString(subscriptionId);
         }
@@ -112,7 +113,7 @@ final class ClientSession {
 
     /** The channel has gone: its subscription with it. */
     void channelGone(int channelId) {
-        Integer sub = subscriptionOfChannel.remove(channelId);
+        @Nullable Integer sub = subscriptionOfChannel.remove(channelId);
         if (sub != null) {
             channelOfSubscription.remove(sub);
         }

@@ -2,6 +2,7 @@ package org.stagecraft.foxglove.live;
 
 import java.io.IOException;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.spy.log.HoldEntry;
@@ -19,11 +20,11 @@ import org.stagecraft.streams.StreamMessage;
  * diagnostic.
  */
 public final class EndOfConnections implements SpyRecorder {
-    private final SpyRecorder log;
+    private final @Nullable SpyRecorder log;
     private final StreamBus bus;
 
     /** @param log the spy log, or null when there is none */
-    public EndOfConnections(SpyRecorder log, StreamBus bus) {
+    public EndOfConnections(@Nullable SpyRecorder log, StreamBus bus) {
         this.log = log;
         this.bus = bus;
     }

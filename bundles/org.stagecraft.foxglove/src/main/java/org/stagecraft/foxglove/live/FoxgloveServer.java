@@ -22,6 +22,8 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Consumer;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.java_websocket.WebSocket;
 import org.java_websocket.WebSocketImpl;
 import org.java_websocket.drafts.Draft;
@@ -71,7 +73,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     private final int maxQueuedFrames;
     private final String sessionId = Long.toString(System.currentTimeMillis());
     private final Endpoint endpoint;
-    private final CompletableFuture<Void> started = new CompletableFuture<>();
+    private final CompletableFuture<@Nullable Void> started = new CompletableFuture<>();
     private final Map<WebSocket, ClientSession> sessions = new ConcurrentHashMap<>();
     private final Object lock = new Object(); // orders channel changes, subscriptions and new viewers
     // guarded by lock
@@ -173,7 +175,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     @Override
     public void advertise(FoxgloveChannel channel) {
         synchronized (lock) {
-            Integer known = advertisedIds.get(channel);
+            @Nullable Integer known = advertisedIds.get(channel);
             if (known != null) {
                 return; // already advertised: nothing new for the viewers
             }
@@ -188,7 +190,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     @Override
     public void unadvertise(FoxgloveChannel channel) {
         synchronized (lock) {
-            Integer id = advertisedIds.remove(channel);
+            @Nullable Integer id = advertisedIds.remove(channel);
             if (id == null) {
                 return;
             }
@@ -206,7 +208,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
      */
     @Override
     public void publish(FoxgloveChannel channel, long logTimeNanos, long publishTimeNanos, byte[] json) {
-        Integer id = advertisedIds.get(channel);
+        @Nullable Integer id = advertisedIds.get(channel);
         if (id == null) {
             throw new IllegalStateException("publish on " + channel.topic() + " before it was advertised");
         }
@@ -282,7 +284,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     }
 
     private void closed(WebSocket conn, String reason) {
-        ClientSession s = sessions.remove(conn);
+        @Nullable ClientSession s = sessions.remove(conn);
         if (s != null) {
             sentByGone.add(s.sent());
             droppedByGone.add(s.dropped());
@@ -292,7 +294,7 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
     }
 
     private void request(WebSocket conn, String text) {
-        ClientSession s = sessions.get(conn);
+        @Nullable ClientSession s = sessions.get(conn);
         if (s == null) {
             return;
         }
@@ -352,29 +354,34 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
             started.complete(null);
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void onOpen(WebSocket conn, ClientHandshake handshake) {
             opened(conn);
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void onClose(WebSocket conn, int code, String reason, boolean remote) {
             closed(conn, reason);
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void onMessage(WebSocket conn, String message) {
             request(conn, message);
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void onMessage(WebSocket conn, ByteBuffer message) {
-            ClientSession s = sessions.get(conn);
+            @Nullable ClientSession s = sessions.get(conn);
             if (s != null) {
                 refuse(s, "binary client messages are not supported by this server (no clientPublish)");
             }
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void onError(WebSocket conn, Exception ex) {
             if (conn == null && !started.isDone()) {

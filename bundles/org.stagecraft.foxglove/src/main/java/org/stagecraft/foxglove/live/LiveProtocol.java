@@ -13,6 +13,7 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParseException;
 import com.google.gson.JsonParser;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.foxglove.FoxgloveChannel;
 
 /**
@@ -82,7 +83,7 @@ final class LiveProtocol {
     }
 
     /** @param id a status with the same id replaces the previous one in the viewer, or null */
-    static String status(int level, String message, String id) {
+    static String status(int level, String message, @Nullable String id) {
         JsonObject o = op("status");
         o.addProperty("level", level);
         o.addProperty("message", message);

@@ -3,7 +3,9 @@ package org.stagecraft.foxglove.live;
 import java.nio.charset.StandardCharsets;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.Objects;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.foxglove.FoxgloveChannel;
 import org.stagecraft.foxglove.FoxgloveSink;
 import org.stagecraft.foxglove.player.PlayerJson;
@@ -31,7 +33,7 @@ public final class PlayerChannels {
         final String topic;
         final String title;
         final PlayerJsonSchema.Node schema;
-        FoxgloveChannel channel;
+        @Nullable FoxgloveChannel channel;
 
         State(String topic, String title, PlayerJsonSchema.Node schema) {
             this.topic = topic;
@@ -69,7 +71,7 @@ public final class PlayerChannels {
             st.schema.merge(layout);
         }
         FoxgloveChannel c = FoxgloveChannel.json(st.topic, st.title.replace(' ', '.'), PlayerJsonSchema.text(st.title, st.schema));
-        if (!c.equals(st.channel)) {
+        if (!Objects.equals(c, st.channel)) {
             if (st.channel != null) {
                 sink.unadvertise(st.channel); // its schema grew: viewers get the channel anew
             }

@@ -6,8 +6,10 @@ import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.json.JsonText;
 import org.stagecraft.player.codec.FieldVisitor;
 import org.stagecraft.player.codec.MessageBody;
@@ -34,9 +36,9 @@ public final class PlayerJsonSchema {
         private final Set<String> kinds = new LinkedHashSet<>();
         private final Map<String, Node> properties = new LinkedHashMap<>();
         /** Members every merged object had; null until an object has been merged. */
-        private Set<String> required;
+        private @Nullable Set<String> required;
         /** The union of all list elements seen; null when every list was empty. */
-        private Node items;
+        private @Nullable Node items;
 
         private static Node of(String kind) {
             Node n = new Node();
@@ -45,13 +47,13 @@ public final class PlayerJsonSchema {
         }
 
         /** Merges {@code other} into this node; returns this. */
-        public Node merge(Node other) {
+        public Node merge(@Nullable Node other) {
             if (other == null) {
                 return this;
             }
             kinds.addAll(other.kinds);
             for (Map.Entry<String, Node> e : other.properties.entrySet()) {
-                Node mine = properties.get(e.getKey());
+                @Nullable Node mine = properties.get(e.getKey());
                 if (mine == null) {
                     properties.put(e.getKey(), e.getValue().copy());
                 } else {
@@ -80,7 +82,7 @@ public final class PlayerJsonSchema {
             if (required == null) {
                 required = new LinkedHashSet<>();
             }
-            Node mine = properties.get(name);
+            @Nullable Node mine = properties.get(name);
             if (mine == null) {
                 properties.put(name, value);
             } else {
@@ -183,42 +185,42 @@ public final class PlayerJsonSchema {
             open.push(root);
         }
 
-        private void add(String name, Node value) {
+        private void add(@Nullable String name, Node value) {
             Node parent = open.peek();
             if (parent.kinds.contains("array") && parent.properties.isEmpty() && parent.kinds.size() == 1) {
                 parent.element(value);
             } else {
-                parent.member(name, value);
+                parent.member(Objects.requireNonNull(name), value); // names are null only inside lists
             }
         }
 
         @Override
-        public void integer(String name, long value) {
+        public void integer(@Nullable String name, long value) {
             add(name, Node.of("integer"));
         }
 
         @Override
-        public void float32(String name, float value) {
+        public void float32(@Nullable String name, float value) {
             add(name, Node.of(Float.isFinite(value) ? "number" : "null"));
         }
 
         @Override
-        public void float64(String name, double value) {
+        public void float64(@Nullable String name, double value) {
             add(name, Node.of(Double.isFinite(value) ? "number" : "null"));
         }
 
         @Override
-        public void text(String name, String value) {
+        public void text(@Nullable String name, String value) {
             add(name, Node.of("string"));
         }
 
         @Override
-        public void opaque(String name, byte[] value) {
+        public void opaque(@Nullable String name, byte[] value) {
             add(name, Node.of("bytes"));
         }
 
         @Override
-        public void beginStruct(String name) {
+        public void beginStruct(@Nullable String name) {
             Node n = Node.of("object");
             n.required = new LinkedHashSet<>();
             names.push(name == null ? "" : name);
@@ -232,7 +234,7 @@ public final class PlayerJsonSchema {
         }
 
         @Override
-        public void beginList(String name) {
+        public void beginList(@Nullable String name) {
             names.push(name == null ? "" : name);
             open.push(Node.of("array"));
         }

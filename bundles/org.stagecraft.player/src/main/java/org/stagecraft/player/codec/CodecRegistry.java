@@ -5,6 +5,7 @@ import java.util.ServiceLoader;
 import java.util.TreeMap;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.player.xdr.XdrException;
 
@@ -55,7 +56,7 @@ public final class CodecRegistry {
     }
 
     /** @return the interface name (e.g. "laser"), or null if unknown */
-    public synchronized String interfaceName(int code) {
+    public synchronized @Nullable String interfaceName(int code) {
         return interfaceNames.get(code);
     }
 
@@ -79,7 +80,7 @@ public final class CodecRegistry {
      */
     public synchronized void register(int interf, MessageType kind, int subtype, String subtypeName, BodyDecoder decoder) {
         checkCode(interf);
-        Layout[] table = byInterface.get(interf);
+        Layout @Nullable [] table = byInterface.get(interf);
         Layout[] copy = table == null ? new Layout[KINDS * SUBTYPES] : table.clone();
         copy[slot(kind, subtype)] = new Layout(subtypeName, decoder);
         byInterface.set(interf, copy);
@@ -98,13 +99,13 @@ public final class CodecRegistry {
     }
 
     /** @return the layout for a header's (interface, type, subtype), or null */
-    public Layout lookup(int interf, int type, int subtype) {
+    public @Nullable Layout lookup(int interf, int type, int subtype) {
         MessageType t = MessageType.of(type);
         if (t == null || interf < 0 || interf > 0xFFFF || subtype < 0 || subtype > 0xFF) {
             return null;
         }
         int slot = slot(t.layoutKind(), subtype);
-        Layout[] table = byInterface.get(interf);
+        Layout @Nullable [] table = byInterface.get(interf);
         Layout l = table == null ? null : table[slot];
         if (l != null) {
             return l;

@@ -1,5 +1,7 @@
 package org.stagecraft.player.codec;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * Receives the fields of a decoded body in wire order, named as in Player's interface definitions
  * (e.g. {@code min_angle}, {@code ranges_count}, {@code pos}). Used to print JSON, fill the packet
@@ -8,24 +10,24 @@ package org.stagecraft.player.codec;
  */
 public interface FieldVisitor {
     /** Any integer field; unsigned 32-bit fields arrive as their unsigned value. */
-    void integer(String name, long value);
+    void integer(@Nullable String name, long value);
 
     /** A 32-bit float, kept as float so it prints with float precision. */
-    void float32(String name, float value);
+    void float32(@Nullable String name, float value);
 
-    void float64(String name, double value);
+    void float64(@Nullable String name, double value);
 
     /** A Player string (char array), without its terminating NUL. */
-    void text(String name, String value);
+    void text(@Nullable String name, String value);
 
     /** Opaque bytes with no numeric meaning (e.g. compressed map cells, property values). */
-    void opaque(String name, byte[] value);
+    void opaque(@Nullable String name, byte[] value);
 
-    void beginStruct(String name);
+    void beginStruct(@Nullable String name);
 
     void endStruct();
 
-    void beginList(String name);
+    void beginList(@Nullable String name);
 
     void endList();
 }

@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.Base64;
 import java.util.Deque;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.FieldVisitor;
 import org.stagecraft.player.codec.MessageBody;
 
@@ -36,7 +37,7 @@ public final class JsonFieldWriter implements FieldVisitor {
         return b.append('}').toString();
     }
 
-    private void key(String name) {
+    private void key(@Nullable String name) {
         boolean[] o = open.peek();
         if (o[0]) {
             b.append(',');
@@ -49,37 +50,37 @@ public final class JsonFieldWriter implements FieldVisitor {
     }
 
     @Override
-    public void integer(String name, long value) {
+    public void integer(@Nullable String name, long value) {
         key(name);
         b.append(value);
     }
 
     @Override
-    public void float32(String name, float value) {
+    public void float32(@Nullable String name, float value) {
         key(name);
         numbers.appendFloat(b, value);
     }
 
     @Override
-    public void float64(String name, double value) {
+    public void float64(@Nullable String name, double value) {
         key(name);
         numbers.appendDouble(b, value);
     }
 
     @Override
-    public void text(String name, String value) {
+    public void text(@Nullable String name, String value) {
         key(name);
         JsonText.string(b, value);
     }
 
     @Override
-    public void opaque(String name, byte[] value) {
+    public void opaque(@Nullable String name, byte[] value) {
         key(name);
         JsonText.string(b, Base64.getEncoder().encodeToString(value));
     }
 
     @Override
-    public void beginStruct(String name) {
+    public void beginStruct(@Nullable String name) {
         key(name);
         b.append('{');
         open.push(new boolean[1]);
@@ -92,7 +93,7 @@ public final class JsonFieldWriter implements FieldVisitor {
     }
 
     @Override
-    public void beginList(String name) {
+    public void beginList(@Nullable String name) {
         key(name);
         b.append('[');
         open.push(new boolean[1]);

@@ -3,6 +3,8 @@ package org.stagecraft.player.msg;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /** Immutable bytes: Player strings (char arrays whose count includes the NUL) and byte arrays. */
 public final class ByteArray {
     public static final ByteArray EMPTY = new ByteArray(new byte[0]);
@@ -58,7 +60,7 @@ public final class ByteArray {
     }
 
     @Override
-    public boolean equals(Object o) {
+    public boolean equals(@Nullable Object o) {
         return o instanceof ByteArray b && Arrays.equals(values, b.values);
     }
 

@@ -4,6 +4,8 @@ import java.lang.reflect.Array;
 import java.util.Arrays;
 import java.util.Objects;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * What {@link FloatArray} and {@link DoubleArray} share: an immutable array of numbers (a
  * {@code float[]} or a {@code double[]}, copied in and out, never changed), compared, hashed and
@@ -22,7 +24,7 @@ abstract sealed class NumberArray permits FloatArray, DoubleArray {
     }
 
     @Override
-    public final boolean equals(Object o) {
+    public final boolean equals(@Nullable Object o) {
         return o != null && o.getClass() == getClass() && Objects.deepEquals(values, ((NumberArray) o).values);
     }
 

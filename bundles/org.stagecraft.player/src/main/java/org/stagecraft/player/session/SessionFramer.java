@@ -8,6 +8,7 @@ import java.util.function.Consumer;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.PlayerFramer;
 import org.stagecraft.player.wire.WireEvent;
@@ -51,7 +52,7 @@ public final class SessionFramer {
     /** The connection closed: both directions end, and unfinished bytes are reported. */
     public void close(double t, int conn) {
         now = t;
-        Connection c = connections.remove(conn);
+        @Nullable Connection c = connections.remove(conn);
         if (c != null) {
             c.end();
         }
@@ -106,12 +107,12 @@ public final class SessionFramer {
         final int port;
         long clientToServerAt;
         long serverToClientAt;
-        byte[] clientToServerHeld;
-        byte[] serverToClientHeld;
-        Lane clientToServer;
-        Lane serverToClient;
+        byte @Nullable [] clientToServerHeld;
+        byte @Nullable [] serverToClientHeld;
+        @Nullable Lane clientToServer;
+        @Nullable Lane serverToClient;
         /** The same connection number with another port (only in malformed recordings). */
-        List<Connection> others;
+        @Nullable List<Connection> others;
 
         Connection(int conn, int port) {
             this.conn = conn;
@@ -130,7 +131,7 @@ public final class SessionFramer {
         }
 
         /** The lane stands at an item start holding at most a partial header: keep its place and bytes, drop it. */
-        void park(Lane lane, long at, byte[] held) {
+        void park(Lane lane, long at, byte @Nullable [] held) {
             if (lane.dir == Direction.CLIENT_TO_SERVER) {
                 clientToServerAt = at;
                 clientToServerHeld = held;
@@ -141,7 +142,7 @@ public final class SessionFramer {
             setActive(lane.dir, null);
         }
 
-        private void setActive(Direction dir, Lane lane) {
+        private void setActive(Direction dir, @Nullable Lane lane) {
             if (dir == Direction.CLIENT_TO_SERVER) {
                 clientToServer = lane;
             } else {
@@ -174,7 +175,7 @@ public final class SessionFramer {
             }
         }
 
-        private void end(Direction dir, Lane active, long at, byte[] held) {
+        private void end(Direction dir, @Nullable Lane active, long at, byte @Nullable [] held) {
             if (active == null && held != null) {
                 active = new Lane(this, dir, at, held);
             }
@@ -213,10 +214,10 @@ public final class SessionFramer {
         /** The last event was a banner or a message (or there was none): the framer stands at an item start. */
         boolean atItem = true;
         /** The bytes fed again at the start (the parked direction's held bytes), or null. */
-        byte[] refed;
+        byte @Nullable [] refed;
 
         /** A framer for a direction parked at stream offset {@code at} with {@code held} bytes not yet reported. */
-        Lane(Connection owner, Direction dir, long at, byte[] held) {
+        Lane(Connection owner, Direction dir, long at, byte @Nullable [] held) {
             this.owner = owner;
             this.dir = dir;
             this.base = at;

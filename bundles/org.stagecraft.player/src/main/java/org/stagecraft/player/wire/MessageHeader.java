@@ -1,5 +1,6 @@
 package org.stagecraft.player.wire;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.xdr.XdrReader;
 import org.stagecraft.player.xdr.XdrWriter;
 
@@ -40,7 +41,7 @@ public record MessageHeader(int host, int robot, int interf, int index, int type
                 .int32(seq).int32(size);
     }
 
-    public MessageType messageType() {
+    public @Nullable MessageType messageType() {
         return MessageType.of(type);
     }
 
@@ -91,7 +92,7 @@ public record MessageHeader(int host, int robot, int interf, int index, int type
      * Why this header cannot be a Player message header, or null if it can. Host, robot, timestamp
      * and seq are never checked: real servers leave them uninitialised on some messages.
      */
-    public String problem() {
+    public @Nullable String problem() {
         if (MessageType.of(type) == null) {
             return "message type " + Integer.toUnsignedLong(type) + " is not a Player message type (1..6)";
         }

@@ -1,5 +1,7 @@
 package org.stagecraft.player.wire;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /** Player message types (player.h, PLAYER_MSGTYPE_*). */
 public enum MessageType {
     DATA(1), CMD(2), REQ(3), RESP_ACK(4), SYNCH(5), RESP_NACK(6);
@@ -18,7 +20,7 @@ public enum MessageType {
     }
 
     /** @return the type for a wire code, or null when the code is not a Player message type */
-    public static MessageType of(int code) {
+    public static @Nullable MessageType of(int code) {
         return code >= 1 && code <= 6 ? BY_CODE[code - 1] : null;
     }
 

@@ -5,7 +5,10 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Objects;
 import java.util.function.Consumer;
+
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * Splits one direction of a Player connection, delivered in arbitrary chunks, into
@@ -41,17 +44,17 @@ public final class PlayerFramer {
     /** The banner or header being assembled across chunks. */
     private final byte[] head = new byte[MessageHeader.SIZE];
     private int headLength;
-    private MessageHeader header;
-    private byte[] headerBytes;
+    private @Nullable MessageHeader header;
+    private byte @Nullable [] headerBytes;
     /** The pieces of the payload being assembled, as received. */
     private final List<byte[]> parts = new ArrayList<>();
     private int partsLength;
     /** In DISCARD: payload bytes of an abandoned message still to pass over. */
     private int discardRemaining;
 
-    private ByteArrayOutputStream skipped;
+    private @Nullable ByteArrayOutputStream skipped;
     private long skippedOffset;
-    private String skippedReason;
+    private @Nullable String skippedReason;
 
     private long framedMessages;
     private long unframedBytes;
@@ -176,7 +179,7 @@ public final class PlayerFramer {
     }
 
     private void completePayload(byte[] payload) {
-        emitFrame(header, payload);
+        emitFrame(Objects.requireNonNull(header), payload);
         itemOffset += MessageHeader.SIZE + payload.length;
         header = null;
         headerBytes = null;

@@ -11,6 +11,8 @@ import org.eclipse.core.resources.IResource;
 import org.eclipse.core.runtime.Adapters;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.MultiStatus;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.dialogs.ErrorDialog;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.jface.viewers.ISelection;
@@ -23,8 +25,9 @@ import org.eclipse.ui.handlers.HandlerUtil;
  * or a message saying PyDev is needed.
  */
 public final class ConfigureRobotProjectHandler extends AbstractHandler {
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
-    public Object execute(ExecutionEvent event) throws ExecutionException {
+    public @Nullable Object execute(ExecutionEvent event) throws ExecutionException {
         Shell shell = HandlerUtil.getActiveShell(event);
         List<IProject> projects = projects(HandlerUtil.getCurrentSelection(event));
         if (projects.isEmpty()) {
@@ -56,7 +59,7 @@ public final class ConfigureRobotProjectHandler extends AbstractHandler {
         List<IProject> out = new ArrayList<>();
         if (selection instanceof IStructuredSelection s) {
             for (Object o : s.toList()) {
-                IResource r = Adapters.adapt(o, IResource.class);
+                @Nullable IResource r = Adapters.adapt(o, IResource.class);
                 if (r != null && r.getProject() != null && r.getProject().isOpen() && !out.contains(r.getProject())) {
                     out.add(r.getProject());
                 }

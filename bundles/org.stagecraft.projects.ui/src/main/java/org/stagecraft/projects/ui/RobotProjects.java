@@ -9,6 +9,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Optional;
 
 import org.eclipse.core.resources.IContainer;
 import org.eclipse.core.resources.IFile;
@@ -30,6 +31,7 @@ import org.eclipse.debug.core.ILaunchConfiguration;
 import org.eclipse.debug.core.ILaunchConfigurationType;
 import org.eclipse.debug.core.ILaunchConfigurationWorkingCopy;
 import org.eclipse.debug.core.ILaunchManager;
+import org.eclipse.jdt.annotation.Nullable;
 import org.osgi.framework.Bundle;
 import org.stagecraft.projects.ui.layout.ProgramTemplate;
 import org.stagecraft.projects.ui.layout.PyDevProjectFile;
@@ -56,7 +58,7 @@ public final class RobotProjects {
     }
 
     /** What the New Robot Project wizard asks for. */
-    public record Spec(String name, URI location, ProgramTemplate program) {
+    public record Spec(String name, @Nullable URI location, ProgramTemplate program) {
         public Spec {
             if (name == null || name.isBlank()) {
                 throw new IllegalArgumentException("a Robot Project needs a name");
@@ -95,7 +97,7 @@ public final class RobotProjects {
      * each cfg with the program, so Run As / Debug As &gt; Robot Session on a cfg runs it. Runs as one
      * workspace operation.
      */
-    public static Created create(Spec spec, IProgressMonitor monitor) throws CoreException {
+    public static Created create(Spec spec, @Nullable IProgressMonitor monitor) throws CoreException {
         IWorkspace ws = ResourcesPlugin.getWorkspace();
         IStatus nameOk = ws.validateName(spec.name(), IResource.PROJECT);
         if (!nameOk.isOK()) {
@@ -150,7 +152,7 @@ public final class RobotProjects {
     }
 
     /** {@link #configurePyDev(IProject)} with progress. */
-    public static boolean configurePyDev(IProject project, IProgressMonitor monitor) throws CoreException {
+    public static boolean configurePyDev(IProject project, @Nullable IProgressMonitor monitor) throws CoreException {
         if (!pyDevInstalled()) {
             return false;
         }
@@ -160,7 +162,8 @@ public final class RobotProjects {
         IWorkspace ws = ResourcesPlugin.getWorkspace();
         ws.run(m -> {
             SubMonitor sub = SubMonitor.convert(m, "Configuring " + project.getName() + " for PyDev", 2);
-            writePyDevSettings(project, PythonClientPath.folder().orElse(null), sub.split(1));
+            Optional<String> client = PythonClientPath.folder();
+            writePyDevSettings(project, client.isPresent() ? client.get() : null, sub.split(1));
             IProjectDescription d = project.getDescription();
             if (!Arrays.asList(d.getNatureIds()).contains(PYDEV_NATURE)) {
                 List<String> natures = new ArrayList<>(Arrays.asList(d.getNatureIds()));
@@ -180,7 +183,7 @@ public final class RobotProjects {
      * @param clientFolder the Python client's folder ({@link PythonClientPath#folder()}), or null
      * @return the file
      */
-    public static IFile writePyDevSettings(IProject project, String clientFolder, IProgressMonitor monitor)
+    public static IFile writePyDevSettings(IProject project, @Nullable String clientFolder, IProgressMonitor monitor)
             throws CoreException {
         IFile file = project.getFile(PyDevProjectFile.FILE_NAME);
         PyDevProjectFile settings;

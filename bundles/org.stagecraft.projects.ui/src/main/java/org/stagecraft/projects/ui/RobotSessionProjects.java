@@ -3,6 +3,7 @@ package org.stagecraft.projects.ui;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
+import java.util.Optional;
 
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IProject;
@@ -18,6 +19,8 @@ import org.eclipse.debug.core.DebugPlugin;
 import org.eclipse.debug.core.ILaunch;
 import org.eclipse.debug.core.ILaunchConfiguration;
 import org.eclipse.debug.core.ILaunchesListener2;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.ui.IStartup;
 import org.stagecraft.projects.ui.layout.PyDevProjectFile;
 import org.stagecraft.tools.ui.launch.LaunchAttributes;
@@ -40,6 +43,7 @@ public final class RobotSessionProjects implements IStartup, ILaunchesListener2 
         }
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void launchesAdded(ILaunch[] launches) {
         for (ILaunch launch : launches) {
@@ -51,7 +55,7 @@ public final class RobotSessionProjects implements IStartup, ILaunchesListener2 
     }
 
     /** The project of the session's program (or of its cfg when no program is set); null for other launches. */
-    public static IProject robotProject(ILaunchConfiguration config) {
+    public static @Nullable IProject robotProject(@Nullable ILaunchConfiguration config) {
         try {
             if (config == null || !LaunchAttributes.TYPE.equals(config.getType().getIdentifier())) {
                 return null;
@@ -76,10 +80,11 @@ public final class RobotSessionProjects implements IStartup, ILaunchesListener2 
             if (!project.hasNature(RobotProjects.PYDEV_NATURE)) {
                 return false;
             }
-            String client = PythonClientPath.folder().orElse(null);
-            if (client == null) {
+            Optional<String> folder = PythonClientPath.folder();
+            if (folder.isEmpty()) {
                 return true; // nothing Stagecraft could add
             }
+            String client = folder.get();
             IFile file = project.getFile(PyDevProjectFile.FILE_NAME);
             if (!file.exists()) {
                 return false;
@@ -94,6 +99,7 @@ public final class RobotSessionProjects implements IStartup, ILaunchesListener2 
 
     private static void configureLater(IProject project) {
         WorkspaceJob job = new WorkspaceJob("Making " + project.getName() + " a robot project for PyDev") {
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public IStatus runInWorkspace(IProgressMonitor monitor) throws CoreException {
                 RobotProjects.configurePyDev(project, monitor);
@@ -105,14 +111,17 @@ public final class RobotSessionProjects implements IStartup, ILaunchesListener2 
         job.schedule();
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void launchesTerminated(ILaunch[] launches) {
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void launchesRemoved(ILaunch[] launches) {
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void launchesChanged(ILaunch[] launches) {
     }

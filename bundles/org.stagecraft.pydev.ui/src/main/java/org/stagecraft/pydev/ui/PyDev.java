@@ -4,6 +4,7 @@ import org.eclipse.core.commands.Command;
 import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.ui.IWorkbenchWindow;
 import org.eclipse.ui.PlatformUI;
@@ -34,7 +35,7 @@ public final class PyDev {
 
     /** Opens p2's install wizard (PyDev's site is one of the available sites); without p2's UI, says what to do. */
     public static void openInstall(IWorkbenchWindow window) {
-        ICommandService commands = window.getService(ICommandService.class);
+        @Nullable ICommandService commands = window.getService(ICommandService.class);
         Command install = commands != null ? commands.getCommand(INSTALL_COMMAND) : null;
         if (install != null && install.isDefined()) {
             try {
@@ -48,7 +49,7 @@ public final class PyDev {
                 + "Install PyDev into it with the p2 director from its update site " + UPDATE_SITE + " (feature org.python.pydev.feature).");
     }
 
-    static IWorkbenchWindow window() {
+    static @Nullable IWorkbenchWindow window() {
         IWorkbenchWindow w = PlatformUI.getWorkbench().getActiveWorkbenchWindow();
         if (w == null && PlatformUI.getWorkbench().getWorkbenchWindowCount() > 0) {
             w = PlatformUI.getWorkbench().getWorkbenchWindows()[0];

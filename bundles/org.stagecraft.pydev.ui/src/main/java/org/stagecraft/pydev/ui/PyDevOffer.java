@@ -4,6 +4,7 @@ import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.preferences.IEclipsePreferences;
 import org.eclipse.core.runtime.preferences.InstanceScope;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.notifications.NotificationPopup;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Display;
@@ -23,7 +24,7 @@ public final class PyDevOffer implements IStartup {
     static final String NODE = "org.stagecraft.pydev.ui";
 
     /** The popup last shown (for tests). */
-    private static volatile NotificationPopup shown;
+    private static volatile @Nullable NotificationPopup shown;
 
     @Override
     public void earlyStartup() {
@@ -65,7 +66,7 @@ public final class PyDevOffer implements IStartup {
         return popup[0];
     }
 
-    public static NotificationPopup lastShown() {
+    public static @Nullable NotificationPopup lastShown() {
         return shown;
     }
 }

@@ -8,6 +8,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.zip.CRC32;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.session.SessionFramer;
@@ -43,7 +44,7 @@ public final class FramingCheck {
 
     /** What reading one variant gave. {@code refusal} is the reader's message, or null if the file was read whole. */
     public record Outcome(long records, long chunkBytes, long events, long frames, long unframedBytes, long banners,
-            long decodeProblems, String refusal) {
+            long decodeProblems, @Nullable String refusal) {
     }
 
     private final PlayerDecoder decoder;
@@ -59,7 +60,7 @@ public final class FramingCheck {
         long fedBytes;
         long reportedBytes;
         final ArrayDeque<WireEvent> plain = new ArrayDeque<>();
-        PlayerFramer plainFramer;
+        @Nullable PlayerFramer plainFramer;
     }
 
     public Outcome check(String name, byte[] file) {
@@ -69,7 +70,7 @@ public final class FramingCheck {
         String refusal = null;
         SessionFramer framer = new SessionFramer(e -> {
             n[1]++;
-            Ledger l = ledgers.get(e.stream());
+            @Nullable Ledger l = ledgers.get(e.stream());
             if (l == null) {
                 throw new Violation(e.stream() + ": an event for a stream that was never fed: " + e.event());
             }
@@ -160,7 +161,7 @@ public final class FramingCheck {
         byte[] bytes = w.bytes();
         l.reported.update(bytes);
         l.reportedBytes += bytes.length;
-        WireEvent expected = l.plain.poll();
+        @Nullable WireEvent expected = l.plain.poll();
         if (expected == null || !same(expected, w)) {
             throw new Violation(e.stream() + ": the session framer reported " + describe(w) + " where one framer for the stream reported "
                     + (expected == null ? "nothing" : describe(expected)));

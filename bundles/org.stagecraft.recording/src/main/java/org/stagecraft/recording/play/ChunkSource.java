@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.util.Iterator;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * One side of a recorded connection, chunk by chunk in recorded order, read as it is played: a
  * source over a large log holds only what it is reading, never the whole side.
@@ -11,7 +13,7 @@ import java.util.List;
 public interface ChunkSource extends AutoCloseable {
 
     /** The next chunk, or null after the last. */
-    TimedChunk next() throws IOException;
+    @Nullable TimedChunk next() throws IOException;
 
     @Override
     void close() throws IOException;
@@ -21,7 +23,7 @@ public interface ChunkSource extends AutoCloseable {
         Iterator<TimedChunk> it = chunks.iterator();
         return new ChunkSource() {
             @Override
-            public TimedChunk next() {
+            public @Nullable TimedChunk next() {
                 return it.hasNext() ? it.next() : null;
             }
 

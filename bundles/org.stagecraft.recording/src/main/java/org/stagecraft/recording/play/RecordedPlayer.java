@@ -16,6 +16,8 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * Stands in for Player with a recording: listens on Player's ports and serves every accepted
  * connection the server side of a recorded connection (the banner, the replies and the data, each
@@ -28,14 +30,14 @@ import java.util.function.Supplier;
  */
 public final class RecordedPlayer implements AutoCloseable {
     /** One served connection, reported when it ended. */
-    public record Served(int port, int recordedConn, ExchangeResult result, String error) {
+    public record Served(int port, int recordedConn, @Nullable ExchangeResult result, @Nullable String error) {
         public String describe() {
             return "served recorded connection " + recordedConn + " on port " + port + ": "
                     + (error != null ? "ended early: " + error : result.describe("robot program"));
         }
     }
 
-    private final TimedRecording recording;
+    private final @Nullable TimedRecording recording;
     private final double speed;
     private final Consumer<Served> report;
     private final List<ServerSocket> servers = new ArrayList<>();
@@ -43,7 +45,7 @@ public final class RecordedPlayer implements AutoCloseable {
     private final AtomicInteger accepted = new AtomicInteger();
     private final ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();
 
-    public RecordedPlayer(TimedRecording recording, double speed, Consumer<Served> report) {
+    public RecordedPlayer(@Nullable TimedRecording recording, double speed, Consumer<Served> report) {
         this.recording = recording;
         this.speed = speed;
         this.report = report;
@@ -118,7 +120,7 @@ public final class RecordedPlayer implements AutoCloseable {
         return servers.stream().map(ServerSocket::getLocalPort).toList();
     }
 
-    private Void acceptLoop(ServerSocket server, Supplier<? extends PlayableConnection> next) {
+    private @Nullable Void acceptLoop(ServerSocket server, Supplier<? extends PlayableConnection> next) {
         while (!server.isClosed()) {
             Socket client;
             try {
@@ -133,7 +135,7 @@ public final class RecordedPlayer implements AutoCloseable {
         return null;
     }
 
-    private Void serve(Socket client, int port, PlayableConnection conn) {
+    private @Nullable Void serve(Socket client, int port, PlayableConnection conn) {
         try (client; ChunkSource send = conn.openServer(); ChunkSource expected = conn.openClient()) {
             ExchangeResult r = Exchange.play(client, send, expected, conn.length(), speed);
             report.accept(new Served(port, conn.conn(), r, null));

@@ -7,6 +7,8 @@ import java.net.Socket;
 import java.time.Duration;
 import java.util.function.Consumer;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * Stands in for a robot program with a recording: connects to Player's port, sends what the
  * recorded client sent, each chunk at its recorded moment (subscriptions, geometry requests, data
@@ -19,7 +21,7 @@ import java.util.function.Consumer;
  */
 public final class RecordedRobot {
     /** One pass over a recorded connection, reported when it ended. */
-    public record Pass(int number, int recordedConn, ExchangeResult result, String error) {
+    public record Pass(int number, int recordedConn, @Nullable ExchangeResult result, @Nullable String error) {
         public String describe() {
             return "pass " + number + " (recorded connection " + recordedConn + "): "
                     + (error != null ? "ended early: " + error : result.describe("Player"));

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.function.Consumer;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.session.SessionFramer;
 
@@ -17,13 +18,13 @@ public final class TraceFraming {
      *
      * @return the trace's header
      */
-    public static TraceRecord.Header frame(Path trace, Consumer<? super SessionEvent> sink) throws IOException {
+    public static TraceRecord.@Nullable Header frame(Path trace, Consumer<? super SessionEvent> sink) throws IOException {
         try (TraceReader reader = new TraceReader(trace)) {
             return frame(reader, sink);
         }
     }
 
-    public static TraceRecord.Header frame(TraceReader reader, Consumer<? super SessionEvent> sink) throws IOException {
+    public static TraceRecord.@Nullable Header frame(TraceReader reader, Consumer<? super SessionEvent> sink) throws IOException {
         return frame(reader, sink, l -> {
         });
     }
@@ -34,7 +35,7 @@ public final class TraceFraming {
      * bytes its end leaves unframed. Whatever was framed when a bad line stops the reading is
      * delivered (the streams are ended) before the exception is thrown.
      */
-    public static TraceRecord.Header frame(TraceReader reader, Consumer<? super SessionEvent> sink,
+    public static TraceRecord.@Nullable Header frame(TraceReader reader, Consumer<? super SessionEvent> sink,
             Consumer<? super TraceRecord.Lifecycle> connections) throws IOException {
         SessionFramer framer = new SessionFramer(sink);
         TraceRecord.Header header = null;

@@ -11,6 +11,8 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * The lines of a JSON-lines file as text, read with bounded memory: a line longer than
  * {@link #MAX_LINE_BYTES} is refused as soon as its first {@code MAX_LINE_BYTES + 1} bytes are in,
@@ -57,7 +59,7 @@ final class TraceLines implements Closeable {
     }
 
     /** @return the next line without its end, or null at the end of the input */
-    String next() throws IOException {
+    @Nullable String next() throws IOException {
         int length = 0;
         boolean any = false;
         while (true) {

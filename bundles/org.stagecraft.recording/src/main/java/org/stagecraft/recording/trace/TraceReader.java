@@ -9,6 +9,7 @@ import java.util.Base64;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.session.StreamId;
 import org.stagecraft.player.wire.Direction;
 
@@ -43,7 +44,7 @@ public final class TraceReader implements Closeable {
     }
 
     /** @return the next record, or null at the end of the file */
-    public TraceRecord next() throws IOException {
+    public @Nullable TraceRecord next() throws IOException {
         String text;
         do {
             text = in.next();

@@ -8,6 +8,8 @@ import java.util.concurrent.atomic.AtomicLong;
 
 import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.Platform;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.action.Action;
 import org.eclipse.jface.action.IMenuManager;
 import org.eclipse.jface.action.Separator;
@@ -55,12 +57,12 @@ public class PlotView extends ViewPart {
         return t;
     });
     private final AtomicLong generation = new AtomicLong();
-    private PlotCanvas plot;
-    private SessionLogEditor editor;
-    private SessionLog sampledLog;
+    private @Nullable PlotCanvas plot;
+    private @Nullable SessionLogEditor editor;
+    private @Nullable SessionLog sampledLog;
     private int sampledWidth;
     private boolean sampling;
-    private IPartListener2 partListener;
+    private @Nullable IPartListener2 partListener;
     /** The last log sampling, per series, and the time range it covers. */
     private List<Series> sampled = List.of();
     private long sampledFrom, sampledTo = 1;
@@ -68,6 +70,7 @@ public class PlotView extends ViewPart {
     private final List<RecordedSeries> recorders = new ArrayList<>();
     private long drawnVersion = -1;
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void init(IViewSite site, IMemento memento) throws PartInitException {
         super.init(site, memento);
@@ -81,6 +84,7 @@ public class PlotView extends ViewPart {
         }
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void createPartControl(Composite parent) {
         plot = new PlotCanvas(parent, this::seek);
@@ -180,16 +184,16 @@ public class PlotView extends ViewPart {
         return plot.series();
     }
 
-    public PlotCanvas canvas() {
+    public @Nullable PlotCanvas canvas() {
         return plot;
     }
 
-    public SessionLogEditor editor() {
+    public @Nullable SessionLogEditor editor() {
         return editor;
     }
 
     /** Plots this editor's log (null: none). */
-    public void setEditor(SessionLogEditor e) {
+    public void setEditor(@Nullable SessionLogEditor e) {
         if (e == editor) {
             return;
         }
@@ -338,6 +342,7 @@ public class PlotView extends ViewPart {
         return sampling;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void saveState(IMemento memento) {
         for (String t : texts) {

@@ -1,6 +1,7 @@
 package org.stagecraft.replay.ui;
 
 import java.nio.file.Path;
+import java.util.Objects;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -10,6 +11,8 @@ import org.eclipse.core.runtime.IProgressMonitor;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.SashForm;
 import org.eclipse.swt.layout.GridData;
@@ -66,7 +69,7 @@ public class SessionLogEditor extends EditorPart {
     private static final ILog LOG = ILog.of(Platform.getBundle("org.stagecraft.replay.ui"));
     private static final AtomicInteger VIEWS = new AtomicInteger();
 
-    private Path file;
+    private @Nullable Path file;
     private final MessageColumns columns = new MessageColumns(Contributions.workbench().codecs());
     private final StreamBus bus = new StreamBus();
     private final ExecutorService reader = Executors.newSingleThreadExecutor(r -> {
@@ -74,18 +77,19 @@ public class SessionLogEditor extends EditorPart {
         t.setDaemon(true);
         return t;
     });
-    private StreamProcessors processors;
-    private AutoCloseable source;
-    private String sourceId;
-    private ReplaySession session;
+    private @Nullable StreamProcessors processors;
+    private @Nullable AutoCloseable source;
+    private @Nullable String sourceId;
+    private @Nullable ReplaySession session;
 
-    private TransportBar transport;
-    private Label status;
-    private TimelineCanvas timeline;
-    private InspectorPanel inspector;
-    private UiThrottle updates, densityUpdates, statusUpdates;
-    private IContextActivation timelineKeys;
+    private @Nullable TransportBar transport;
+    private @Nullable Label status;
+    private @Nullable TimelineCanvas timeline;
+    private @Nullable InspectorPanel inspector;
+    private @Nullable UiThrottle updates, densityUpdates, statusUpdates;
+    private @Nullable IContextActivation timelineKeys;
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void init(IEditorSite site, IEditorInput input) throws PartInitException {
         setSite(site);
@@ -98,10 +102,12 @@ public class SessionLogEditor extends EditorPart {
         setTitleToolTip(file.toString());
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void createPartControl(Composite parent) {
         Display display = parent.getDisplay();
-        session = new ReplaySession(file, columns, bus, new WorkbenchThreads(display),
+        // init() refused an input without a local file
+        session = new ReplaySession(Objects.requireNonNull(file), columns, bus, new WorkbenchThreads(display),
                 new FollowPace(ReplaySession.FOLLOW_MILLIS, ReplaySession.FOLLOW_FACTOR), new View());
         Composite root = new Composite(parent, SWT.NONE);
         GridLayout layout = new GridLayout(1, false);
@@ -262,21 +268,21 @@ public class SessionLogEditor extends EditorPart {
     // --- the commands, and for the tests, the Plot view and the export ----------------------------
 
     /** The replay session this editor shows. */
-    public ReplaySession session() {
+    public @Nullable ReplaySession session() {
         return session;
     }
 
-    public Path file() {
+    public @Nullable Path file() {
         return file;
     }
 
     /** The log on show, or null while the file is first read or when it could not be opened at all. */
-    public SessionLog log() {
+    public @Nullable SessionLog log() {
         return session.log();
     }
 
     /** The log on show with its readers' hold on it: read it only between acquire and release. */
-    public SharedLog sharedLog() {
+    public @Nullable SharedLog sharedLog() {
         return session.sharedLog();
     }
 
@@ -295,7 +301,7 @@ public class SessionLogEditor extends EditorPart {
         return session.statusText();
     }
 
-    public Replayer replayer() {
+    public @Nullable Replayer replayer() {
         return session.replayer();
     }
 
@@ -305,7 +311,7 @@ public class SessionLogEditor extends EditorPart {
     }
 
     /** This editor's entry in {@link BusSources}. */
-    public String sourceId() {
+    public @Nullable String sourceId() {
         return sourceId;
     }
 
@@ -313,15 +319,15 @@ public class SessionLogEditor extends EditorPart {
         return columns;
     }
 
-    public TimelineCanvas timeline() {
+    public @Nullable TimelineCanvas timeline() {
         return timeline;
     }
 
-    public InspectorPanel inspector() {
+    public @Nullable InspectorPanel inspector() {
         return inspector;
     }
 
-    public TransportBar transport() {
+    public @Nullable TransportBar transport() {
         return transport;
     }
 
@@ -381,6 +387,7 @@ public class SessionLogEditor extends EditorPart {
         timeline.canvas().setFocus(); // where the transport keys work
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void doSave(IProgressMonitor monitor) {
         // a log is read, never written

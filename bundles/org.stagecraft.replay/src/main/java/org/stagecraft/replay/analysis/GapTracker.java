@@ -3,6 +3,7 @@ package org.stagecraft.replay.analysis;
 import java.util.HashMap;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.replay.log.LogMessage;
 
@@ -12,7 +13,7 @@ import org.stagecraft.replay.log.LogMessage;
  * overflowed). Fed entries in log order; formats that give no offsets never show a gap.
  */
 public final class GapTracker {
-    private record Stream(int conn, Direction dir) {
+    private record Stream(int conn, @Nullable Direction dir) {
     }
 
     private final Map<Stream, Long> next = new HashMap<>();
@@ -24,7 +25,7 @@ public final class GapTracker {
             return 0;
         }
         Stream s = new Stream(m.connection().id(), m.dir());
-        Long expected = next.put(s, m.streamOffset() + m.bytes().length);
+        @Nullable Long expected = next.put(s, m.streamOffset() + m.bytes().length);
         return expected != null && m.streamOffset() > expected ? m.streamOffset() - expected : 0;
     }
 }

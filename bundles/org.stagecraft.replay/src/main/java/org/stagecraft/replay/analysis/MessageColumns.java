@@ -2,6 +2,7 @@ package org.stagecraft.replay.analysis;
 
 import java.util.Locale;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
@@ -41,7 +42,7 @@ public final class MessageColumns {
         return direction(m.dir());
     }
 
-    public static String direction(Direction d) {
+    public static String direction(@Nullable Direction d) {
         return d == null ? "" : d.label();
     }
 

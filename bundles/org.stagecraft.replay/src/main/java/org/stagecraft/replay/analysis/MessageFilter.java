@@ -3,6 +3,7 @@ package org.stagecraft.replay.analysis;
 import java.util.Locale;
 import java.util.Optional;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.streams.StreamKey;
 import org.stagecraft.streams.StreamMessage;
@@ -15,12 +16,12 @@ import org.stagecraft.streams.StreamPattern;
  * without a stream key (connection events, banners) pass only an empty pattern.
  */
 public final class MessageFilter {
-    private final StreamPattern pattern;
+    private final @Nullable StreamPattern pattern;
     private final String patternText;
     private final String text;
     private final MessageColumns columns;
 
-    private MessageFilter(StreamPattern pattern, String patternText, String text, MessageColumns columns) {
+    private MessageFilter(@Nullable StreamPattern pattern, String patternText, String text, MessageColumns columns) {
         this.pattern = pattern;
         this.patternText = patternText;
         this.text = text;

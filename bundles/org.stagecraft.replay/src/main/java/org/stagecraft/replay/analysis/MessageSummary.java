@@ -4,7 +4,9 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.Locale;
+import java.util.Objects;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.FieldVisitor;
@@ -34,7 +36,7 @@ public final class MessageSummary {
             case UNFRAMED -> m.bytes().length + " bytes that are not a Player message"
                     + (m.text().isEmpty() ? "" : ": " + m.text());
             case DIAGNOSTIC -> m.text();
-            case FRAME -> cut(frame(m.decoded()));
+            case FRAME -> cut(frame(Objects.requireNonNull(m.decoded())));
         };
     }
 
@@ -99,7 +101,7 @@ public final class MessageSummary {
         private final StringBuilder out;
         private final Deque<String> names = new ArrayDeque<>();
         /** Inside a list: its name, element count and numeric range; nested lists count only at the top. */
-        private String listName;
+        private @Nullable String listName;
         private int listDepth, listCount;
         private double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
 
@@ -107,7 +109,7 @@ public final class MessageSummary {
             this.out = out;
         }
 
-        private void field(String name, String value) {
+        private void field(@Nullable String name, String value) {
             if (out.length() > MAX_LENGTH) {
                 return;
             }
@@ -117,7 +119,7 @@ public final class MessageSummary {
             out.append(path(name)).append('=').append(value);
         }
 
-        private String path(String name) {
+        private String path(@Nullable String name) {
             StringBuilder p = new StringBuilder();
             for (var it = names.descendingIterator(); it.hasNext();) {
                 p.append(it.next()).append('.');
@@ -125,7 +127,7 @@ public final class MessageSummary {
             return p.append(name).toString();
         }
 
-        private void number(String name, double v) {
+        private void number(@Nullable String name, double v) {
             if (listDepth > 0) {
                 if (listDepth == 1 && name == null) { // a list of numbers: its range says most
                     listCount++;
@@ -138,22 +140,22 @@ public final class MessageSummary {
         }
 
         @Override
-        public void integer(String name, long value) {
+        public void integer(@Nullable String name, long value) {
             number(name, value);
         }
 
         @Override
-        public void float32(String name, float value) {
+        public void float32(@Nullable String name, float value) {
             number(name, value);
         }
 
         @Override
-        public void float64(String name, double value) {
+        public void float64(@Nullable String name, double value) {
             number(name, value);
         }
 
         @Override
-        public void text(String name, String value) {
+        public void text(@Nullable String name, String value) {
             if (listDepth > 0) {
                 countElement(name);
             } else {
@@ -162,7 +164,7 @@ public final class MessageSummary {
         }
 
         @Override
-        public void opaque(String name, byte[] value) {
+        public void opaque(@Nullable String name, byte[] value) {
             if (listDepth > 0) {
                 countElement(name);
             } else {
@@ -170,14 +172,14 @@ public final class MessageSummary {
             }
         }
 
-        private void countElement(String name) {
+        private void countElement(@Nullable String name) {
             if (listDepth == 1 && name == null) {
                 listCount++;
             }
         }
 
         @Override
-        public void beginStruct(String name) {
+        public void beginStruct(@Nullable String name) {
             if (listDepth > 0) {
                 countElement(name);
             } else {
@@ -193,7 +195,7 @@ public final class MessageSummary {
         }
 
         @Override
-        public void beginList(String name) {
+        public void beginList(@Nullable String name) {
             if (listDepth++ == 0) {
                 listName = path(name == null ? "?" : name);
                 listCount = 0;

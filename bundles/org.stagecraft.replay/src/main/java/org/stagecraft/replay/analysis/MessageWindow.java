@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
@@ -47,7 +48,7 @@ public record MessageWindow(List<InspectorRow> rows, int anchorIndex, boolean at
     }
 
     /** Index of the row holding {@code m} (same place in the log), or -1. */
-    public int indexOf(LogMessage m) {
+    public int indexOf(@Nullable LogMessage m) {
         if (m == null) {
             return -1;
         }

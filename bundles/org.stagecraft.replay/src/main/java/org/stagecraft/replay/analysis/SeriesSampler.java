@@ -3,6 +3,7 @@ package org.stagecraft.replay.analysis;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.function.BooleanSupplier;
 
@@ -109,10 +110,11 @@ public final class SeriesSampler {
                     if (m.kind() != LogMessage.Kind.FRAME || m.decoded() == null || m.decoded().hasProblem()) {
                         continue;
                     }
-                    StreamKey key = MessageFilter.key(m).orElse(null);
-                    if (key == null) {
+                    Optional<StreamKey> k = MessageFilter.key(m);
+                    if (k.isEmpty()) {
                         continue;
                     }
+                    StreamKey key = k.get();
                     MessageBody body = m.decoded().body();
                     int b = (int) Math.min(buckets - 1, (m.timeNanos() - from) / span * buckets);
                     for (int i = 0; i < specs.size(); i++) {

@@ -10,6 +10,7 @@ import java.util.Optional;
 import java.util.function.BooleanSupplier;
 import java.util.function.DoubleConsumer;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
@@ -34,7 +35,7 @@ public final class TimelineDensity {
      * @param label  what the timeline writes beside it
      * @param counts messages per bucket
      */
-    public record Track(StreamKey key, String label, int[] counts) {
+    public record Track(@Nullable StreamKey key, String label, int[] counts) {
         public long total() {
             long n = 0;
             for (int c : counts) {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.Locale;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.MessageType;
@@ -26,7 +27,7 @@ import org.stagecraft.streams.StreamPattern;
  * @param pattern      the streams to take, or null for all
  * @param grep         text to look for, or null
  */
-public record ExportFilter(Double fromSeconds, Double untilSeconds, StreamPattern pattern, String grep) {
+public record ExportFilter(@Nullable Double fromSeconds, @Nullable Double untilSeconds, @Nullable StreamPattern pattern, @Nullable String grep) {
 
     public static ExportFilter all() {
         return new ExportFilter(null, null, null, null);
@@ -72,8 +73,8 @@ public record ExportFilter(Double fromSeconds, Double untilSeconds, StreamPatter
             return false;
         }
         if (pattern != null) {
-            var key = m.toStreamMessage().map(s -> s.key()).orElse(null);
-            if (key == null || !pattern.matches(key)) {
+            var key = m.toStreamMessage().map(s -> s.key());
+            if (key.isEmpty() || !pattern.matches(key.get())) {
                 return false;
             }
         }

@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.TreeMap;
 
 import org.stagecraft.foxglove.FoxgloveScene;
@@ -98,14 +99,14 @@ public final class McapExport {
                         m.toStreamMessage().ifPresent(scene::accept);
                     }
                     case BANNER, UNFRAMED -> {
-                        w.wire(m.timeNanos(), ci.id(), ci.port(), m.dir(), m.streamOffset(),
+                        w.wire(m.timeNanos(), ci.id(), ci.port(), Objects.requireNonNull(m.dir()), m.streamOffset(),
                                 m.kind() == LogMessage.Kind.BANNER ? LogEntry.Kind.BANNER : LogEntry.Kind.UNFRAMED,
                                 m.bytes(), m.text());
                         counts[0]++;
                         m.toStreamMessage().ifPresent(scene::accept);
                     }
                     case FRAME -> {
-                        w.wire(m.timeNanos(), ci.id(), ci.port(), m.dir(), m.streamOffset(), LogEntry.Kind.FRAME,
+                        w.wire(m.timeNanos(), ci.id(), ci.port(), Objects.requireNonNull(m.dir()), m.streamOffset(), LogEntry.Kind.FRAME,
                                 m.bytes(), "");
                         counts[0]++;
                         MessageHeader h = m.decoded().header();

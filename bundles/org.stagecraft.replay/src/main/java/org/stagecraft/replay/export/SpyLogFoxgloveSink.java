@@ -5,6 +5,7 @@ import java.io.UncheckedIOException;
 import java.util.HashMap;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.foxglove.FoxgloveChannel;
 import org.stagecraft.foxglove.FoxgloveSink;
 import org.stagecraft.spy.log.SpyLogWriter;
@@ -34,7 +35,7 @@ final class SpyLogFoxgloveSink implements FoxgloveSink {
 
     @Override
     public void publish(FoxgloveChannel c, long logTimeNanos, long publishTimeNanos, byte[] json) {
-        Integer id = ids.get(c);
+        @Nullable Integer id = ids.get(c);
         if (id == null) {
             throw new IllegalStateException("channel " + c.topic() + " was published before it was advertised");
         }

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
@@ -43,7 +44,7 @@ public final class WritelogExport {
     }
 
     /** "3.1.1-dev" from the first banner "Player v.3.1.1-dev", or null. */
-    static String playerVersion(SessionLog log) throws IOException {
+    static @Nullable String playerVersion(SessionLog log) throws IOException {
         try (LogCursor c = log.cursor(Long.MIN_VALUE)) {
             int looked = 0;
             for (LogMessage m = c.next(); m != null && looked < 1000; m = c.next(), looked++) {

@@ -2,6 +2,8 @@ package org.stagecraft.replay.fields;
 
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * One field of a decoded Player message, named as in Player's interface definitions. Lists hold
  * unnamed elements (their name is null; paths address them by index).
@@ -12,7 +14,7 @@ import java.util.List;
  *                 a {@link String} for text, a {@code byte[]} for opaque bytes; null for structs and lists
  * @param children the members of a struct or the elements of a list, in wire order; empty otherwise
  */
-public record Field(String name, Kind kind, Object value, List<Field> children) {
+public record Field(@Nullable String name, Kind kind, @Nullable Object value, List<Field> children) {
 
     /** The kinds of field the codec reports. */
     public enum Kind {
@@ -36,7 +38,7 @@ public record Field(String name, Kind kind, Object value, List<Field> children) 
     }
 
     /** The member of a struct with this name, or null. */
-    public Field member(String memberName) {
+    public @Nullable Field member(String memberName) {
         for (Field c : children) {
             if (memberName.equals(c.name())) {
                 return c;

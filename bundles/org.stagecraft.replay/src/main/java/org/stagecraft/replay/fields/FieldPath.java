@@ -3,6 +3,7 @@ package org.stagecraft.replay.fields;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Objects;
 import java.util.OptionalDouble;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -172,7 +173,7 @@ public final class FieldPath {
     public static List<String> suggestions(MessageBody body) {
         List<String> out = new ArrayList<>();
         for (Field f : FieldTree.of(body).children()) {
-            suggest(f.name(), f, out);
+            suggest(Objects.requireNonNull(f.name()), f, out); // the body's own fields have names
         }
         return out;
     }

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.FieldVisitor;
 import org.stagecraft.player.codec.MessageBody;
 
@@ -17,7 +18,7 @@ public final class FieldTree implements FieldVisitor {
     /** Name of the root struct that holds a body's top-level fields. */
     public static final String ROOT = "body";
 
-    private record Open(String name, Field.Kind kind, List<Field> children) {
+    private record Open(@Nullable String name, Field.Kind kind, List<Field> children) {
     }
 
     private final Deque<Open> open = new ArrayDeque<>();
@@ -37,37 +38,37 @@ public final class FieldTree implements FieldVisitor {
         return new Field(root.name(), root.kind(), null, root.children());
     }
 
-    private void add(String name, Field.Kind kind, Object value) {
+    private void add(@Nullable String name, Field.Kind kind, Object value) {
         open.peek().children().add(new Field(name, kind, value, List.of()));
     }
 
     @Override
-    public void integer(String name, long value) {
+    public void integer(@Nullable String name, long value) {
         add(name, Field.Kind.INTEGER, value);
     }
 
     @Override
-    public void float32(String name, float value) {
+    public void float32(@Nullable String name, float value) {
         add(name, Field.Kind.FLOAT32, value);
     }
 
     @Override
-    public void float64(String name, double value) {
+    public void float64(@Nullable String name, double value) {
         add(name, Field.Kind.FLOAT64, value);
     }
 
     @Override
-    public void text(String name, String value) {
+    public void text(@Nullable String name, String value) {
         add(name, Field.Kind.TEXT, value);
     }
 
     @Override
-    public void opaque(String name, byte[] value) {
+    public void opaque(@Nullable String name, byte[] value) {
         add(name, Field.Kind.OPAQUE, value.clone());
     }
 
     @Override
-    public void beginStruct(String name) {
+    public void beginStruct(@Nullable String name) {
         open.push(new Open(name, Field.Kind.STRUCT, new ArrayList<>()));
     }
 
@@ -77,7 +78,7 @@ public final class FieldTree implements FieldVisitor {
     }
 
     @Override
-    public void beginList(String name) {
+    public void beginList(@Nullable String name) {
         open.push(new Open(name, Field.Kind.LIST, new ArrayList<>()));
     }
 

@@ -2,6 +2,7 @@ package org.stagecraft.replay.fields;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Objects;
 
 import org.stagecraft.player.codec.MessageBody;
 
@@ -20,7 +21,7 @@ public final class FlatFields {
     public static Map<String, Object> flatten(MessageBody body) {
         Map<String, Object> out = new LinkedHashMap<>();
         for (Field f : FieldTree.of(body).children()) {
-            walk(f.name(), f, out);
+            walk(Objects.requireNonNull(f.name()), f, out); // the body's own fields have names
         }
         return out;
     }
@@ -39,7 +40,7 @@ public final class FlatFields {
                     walk(path + "[" + i++ + "]", c, out);
                 }
             }
-            default -> out.put(path, field.value());
+            default -> out.put(path, Objects.requireNonNull(field.value())); // a leaf has a value
         }
     }
 }

@@ -3,6 +3,7 @@ package org.stagecraft.replay.log;
 import java.util.Arrays;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.PlayerDecoder;
@@ -24,25 +25,25 @@ final class EntryConverter {
     }
 
     ConnectionInfo connection(int conn, int port) {
-        ConnectionInfo c = connections.get(conn);
+        @Nullable ConnectionInfo c = connections.get(conn);
         // a recovered log may have lost the open event: name the connection by what is left
         return c != null ? c : new ConnectionInfo(conn, port, "connection " + conn, "port " + port, "");
     }
 
     /** A connection that carried no bytes is not among the indexed ones: its open event names it. */
     private ConnectionInfo opened(LogEntry.Opened o) {
-        ConnectionInfo c = connections.get(o.conn());
+        @Nullable ConnectionInfo c = connections.get(o.conn());
         return c != null ? c : new ConnectionInfo(o.conn(), -1, o.client(), o.listen(), o.upstream());
     }
 
     LogMessage convert(LogEntry e) {
         return switch (e) {
-            case LogEntry.Opened o -> new LogMessage(o.timeNanos(), opened(o), null, -1, LogMessage.Kind.OPENED, null,
+            case LogEntry.Opened o -> new LogMessage(o.timeNanos(), opened(o), null, -1, LogMessage.Kind.OPENED, new byte[0],
                     null, "");
             case LogEntry.Closed c -> new LogMessage(c.timeNanos(), connection(c.conn(), -1), null, -1,
-                    LogMessage.Kind.CLOSED, null, null, c.reason());
+                    LogMessage.Kind.CLOSED, new byte[0], null, c.reason());
             case LogEntry.Diagnostic d -> new LogMessage(d.timeNanos(), connection(d.conn(), -1), d.dir(),
-                    d.streamOffset(), LogMessage.Kind.DIAGNOSTIC, null, null, d.text());
+                    d.streamOffset(), LogMessage.Kind.DIAGNOSTIC, new byte[0], null, d.text());
             case LogEntry.Wire w -> wire(w);
         };
     }

@@ -2,6 +2,8 @@ package org.stagecraft.replay.log;
 
 import java.io.IOException;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * A position between two messages of a {@link SessionLog} that moves both ways. Seeking uses the
  * file's index where it has one, so it costs about the same anywhere in a large log.
@@ -15,10 +17,10 @@ public interface LogCursor extends AutoCloseable {
     void seekTo(LogMessage message) throws IOException;
 
     /** The message after the cursor, moving past it; null at the end of the log. */
-    LogMessage next() throws IOException;
+    @Nullable LogMessage next() throws IOException;
 
     /** The message before the cursor, moving back before it; null at the start of the log. */
-    LogMessage previous() throws IOException;
+    @Nullable LogMessage previous() throws IOException;
 
     @Override
     void close() throws IOException;

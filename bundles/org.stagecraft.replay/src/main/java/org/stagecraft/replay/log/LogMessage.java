@@ -1,7 +1,9 @@
 package org.stagecraft.replay.log;
 
+import java.util.Objects;
 import java.util.Optional;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.spy.proxy.ConnectionInfo;
@@ -24,8 +26,8 @@ import org.stagecraft.streams.StreamMessage;
  * @param decoded      the decoded message for {@link Kind#FRAME}, else null
  * @param text         the reason or diagnostic text; empty when there is none
  */
-public record LogMessage(long timeNanos, ConnectionInfo connection, Direction dir, long streamOffset, Kind kind,
-        byte[] bytes, DecodedMessage decoded, String text) {
+public record LogMessage(long timeNanos, ConnectionInfo connection, @Nullable Direction dir, long streamOffset, Kind kind,
+        byte[] bytes, @Nullable DecodedMessage decoded, String text) {
 
     /** What a log message is. */
     public enum Kind {
@@ -49,11 +51,18 @@ public record LogMessage(long timeNanos, ConnectionInfo connection, Direction di
      */
     public Optional<StreamMessage> toStreamMessage() {
         return switch (kind) {
-            case FRAME -> Optional.of(new StreamMessage(SpyStreams.messageKey(connection, dir, decoded.header()),
-                    timeNanos, new SpyMessage(connection, dir, streamOffset, decoded)));
-            case UNFRAMED, DIAGNOSTIC -> dir == null ? Optional.empty()
-                    : Optional.of(new StreamMessage(SpyStreams.diagnosticKey(connection, dir), timeNanos,
-                            new SpyDiagnostic(connection, dir, streamOffset, text)));
+            case FRAME -> {
+                Direction d = Objects.requireNonNull(dir); // a frame has both
+                DecodedMessage message = Objects.requireNonNull(decoded);
+                yield Optional.of(new StreamMessage(SpyStreams.messageKey(connection, d, message.header()),
+                        timeNanos, new SpyMessage(connection, d, streamOffset, message)));
+            }
+            case UNFRAMED, DIAGNOSTIC -> {
+                Direction d = dir;
+                yield d == null ? Optional.empty()
+                        : Optional.of(new StreamMessage(SpyStreams.diagnosticKey(connection, d), timeNanos,
+                                new SpyDiagnostic(connection, d, streamOffset, text)));
+            }
             case OPENED, CLOSED, BANNER -> Optional.empty();
         };
     }

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.log.LogEntry;
 import org.stagecraft.spy.log.SpyLogReader;
 
@@ -32,7 +33,7 @@ final class SpyLogCursor implements LogCursor {
     private long posTime;
     private int posRank;
     /** Streams forward from the position; null until needed, dropped when the position moves back. */
-    private Iterator<LogEntry> forward;
+    private @Nullable Iterator<LogEntry> forward;
     /** Entries just before the position, in log order; the last one is the previous entry. */
     private final List<Ranked> back = new ArrayList<>();
     private long backSpan = FIRST_BACK_SPAN;
@@ -78,10 +79,12 @@ final class SpyLogCursor implements LogCursor {
     }
 
     @Override
-    public LogMessage next() throws IOException {
+    public @Nullable LogMessage next() throws IOException {
         checkOpen();
+        Iterator<LogEntry> forward = this.forward;
         if (forward == null) {
             forward = entriesFrom(posTime);
+            this.forward = forward;
             for (int skipped = 0; skipped < posRank && forward.hasNext(); skipped++) {
                 forward.next(); // entries at the position's time that lie before it
             }
@@ -103,7 +106,7 @@ final class SpyLogCursor implements LogCursor {
     }
 
     @Override
-    public LogMessage previous() throws IOException {
+    public @Nullable LogMessage previous() throws IOException {
         checkOpen();
         if (back.isEmpty() && !fillBack()) {
             return null;

@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.LogConnection;
@@ -56,7 +57,7 @@ final class SpyLogSession implements SessionLog {
         this.problems = List.copyOf(p);
     }
 
-    private static String orElse(String s, String other) {
+    private static String orElse(@Nullable String s, String other) {
         return s == null || s.isEmpty() ? other : s;
     }
 

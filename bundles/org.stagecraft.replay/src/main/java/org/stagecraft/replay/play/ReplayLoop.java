@@ -2,6 +2,7 @@ package org.stagecraft.replay.play;
 
 import java.util.concurrent.atomic.AtomicInteger;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.replay.log.LogMessage;
 
 /**
@@ -34,7 +35,7 @@ public final class ReplayLoop implements ReplayListener {
     }
 
     @Override
-    public void moved(long timeNanos, LogMessage last) {
+    public void moved(long timeNanos, @Nullable LogMessage last) {
         if (last != null) {
             publishedThisPass = true;
         }

@@ -8,6 +8,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
@@ -46,14 +47,14 @@ public final class Replayer implements AutoCloseable {
     private double speed = 1;
     private long position;
     /** Taken from the cursor by the play thread, waiting for its time; not yet published. */
-    private LogMessage taken;
+    private @Nullable LogMessage taken;
     /** Changes whenever the position, speed or play state changes, so a waiting message is re-timed. */
     private long generation;
     private long anchorWall;
     private long anchorLog;
-    private Exception failure;
+    private @Nullable Exception failure;
     /** The message last published, with the cursor right after it; null after a seek. */
-    private LogMessage lastPublished;
+    private @Nullable LogMessage lastPublished;
 
     public Replayer(SessionLog log, StreamBus bus, ReplayClock clock) throws IOException {
         this.log = log;
@@ -213,7 +214,7 @@ public final class Replayer implements AutoCloseable {
     }
 
     /** The message last published (the one on show); null after a seek. */
-    public LogMessage lastPublished() {
+    public @Nullable LogMessage lastPublished() {
         lock.lock();
         try {
             return lastPublished;
@@ -223,7 +224,7 @@ public final class Replayer implements AutoCloseable {
     }
 
     /** Publishes the next message and moves past it; null at the end. Pauses play first. */
-    public LogMessage stepForward() {
+    public @Nullable LogMessage stepForward() {
         return step(cursor::next);
     }
 
@@ -232,7 +233,7 @@ public final class Replayer implements AutoCloseable {
      * and moves just past it, so a step forward shows again what followed; null at the start, where
      * nothing moves. Pauses play first.
      */
-    public LogMessage stepBack() {
+    public @Nullable LogMessage stepBack() {
         return step(() -> {
             boolean onShow = lastPublished != null;
             if (onShow) {
@@ -250,7 +251,7 @@ public final class Replayer implements AutoCloseable {
         });
     }
 
-    private LogMessage step(IoCall<LogMessage> move) {
+    private @Nullable LogMessage step(IoCall<@Nullable LogMessage> move) {
         LogMessage m;
         boolean was;
         lock.lock();
@@ -293,7 +294,7 @@ public final class Replayer implements AutoCloseable {
      * The error that stopped play (reading the log failed, or a message could not be decoded or
      * published; play pauses then); null if none did.
      */
-    public Exception failure() {
+    public @Nullable Exception failure() {
         lock.lock();
         try {
             return failure;
@@ -500,7 +501,7 @@ public final class Replayer implements AutoCloseable {
         }
     }
 
-    private void fireMoved(long time, LogMessage last) {
+    private void fireMoved(long time, @Nullable LogMessage last) {
         for (ReplayListener l : listeners) {
             try {
                 l.moved(time, last);

@@ -3,6 +3,7 @@ package org.stagecraft.replay.session;
 import java.io.IOException;
 import java.nio.file.Path;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.log.SessionLogs;
@@ -11,7 +12,7 @@ import org.stagecraft.replay.play.Replayer;
 import org.stagecraft.streams.StreamBus;
 
 /** What one background reading of the file produced: the log and its replayer, or why there is none. */
-record OpenedLog(SharedLog shared, Replayer replayer, Exception error, long costNanos) {
+record OpenedLog(@Nullable SharedLog shared, @Nullable Replayer replayer, @Nullable Exception error, long costNanos) {
     static OpenedLog read(Path file, CodecRegistry codecs, StreamBus bus, SharedLog.CloseFailure onCloseFailure) {
         long started = System.nanoTime();
         SessionLog l = null;

@@ -8,6 +8,7 @@ import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.RejectedExecutionException;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.replay.analysis.MessageColumns;
 import org.stagecraft.replay.analysis.TimelineDensity;
 import org.stagecraft.replay.log.HoldMarks;
@@ -47,16 +48,16 @@ public final class ReplaySession implements AutoCloseable {
     private final ReplayTransport transport;
 
     /** The log on show with its readers' hold on it, and its replayer: replaced together, on the owner thread. */
-    private volatile SharedLog shared;
-    private volatile Replayer replayer;
+    private volatile @Nullable SharedLog shared;
+    private volatile @Nullable Replayer replayer;
     private volatile HoldMarks holds = HoldMarks.none();
-    private volatile TimelinePass pass;
+    private volatile @Nullable TimelinePass pass;
     /** What stopped play, told by the replayer; cleared when play starts again. */
-    private volatile String playFailure;
+    private volatile @Nullable String playFailure;
     /** Why the file could not be opened at all; why reading it again failed (the previous reading stays). */
-    private volatile String openError, reopenError;
+    private volatile @Nullable String openError, reopenError;
     /** The reading under way (owner thread), and the number of the latest one asked for. */
-    private SessionThreads.Work reading;
+    private SessionThreads.@Nullable Work reading;
     private long generation;
     private boolean closed;
     /** Following a log still being written: its size when last read, when that look began, whether it grows. */
@@ -164,8 +165,9 @@ public final class ReplaySession implements AutoCloseable {
         }
         reading = null;
         pace.reopened(o.costNanos());
-        if (o.error() != null) {
-            String why = Failures.describe(o.error());
+        Exception error = o.error();
+        if (error != null) {
+            String why = Failures.describe(error);
             view.warning("cannot " + (log() == null ? "open " : "read again ") + file + ": " + why);
             if (log() == null) {
                 openError = o.error().getMessage() == null ? why : o.error().getMessage();
@@ -177,10 +179,10 @@ public final class ReplaySession implements AutoCloseable {
         }
         Replayer old = replayer;
         SharedLog oldShared = shared;
-        Replayer r = o.replayer();
+        Replayer r = Objects.requireNonNull(o.replayer()); // read without an error: both are there
         boolean play = old != null && carryOn(old, r);
         r.addListener(new Listener(r));
-        SharedLog s = o.shared();
+        SharedLog s = Objects.requireNonNull(o.shared());
         SessionLog l = s.log();
         holds = holdMarks(l);
         shared = s;
@@ -246,7 +248,7 @@ public final class ReplaySession implements AutoCloseable {
      * Stops a replaced replayer and lets its log go, in the background: stopping waits for the play
      * thread, and the log closes when its last reader (timeline pass, inspector, plot) is done.
      */
-    private void retire(Replayer r, SharedLog s) {
+    private void retire(@Nullable Replayer r, @Nullable SharedLog s) {
         if (r == null && s == null) {
             return;
         }
@@ -277,7 +279,7 @@ public final class ReplaySession implements AutoCloseable {
         }
 
         @Override
-        public void moved(long timeNanos, LogMessage last) {
+        public void moved(long timeNanos, @Nullable LogMessage last) {
             if (r == replayer) {
                 transport.published(last);
                 view.replayMoved();
@@ -310,18 +312,18 @@ public final class ReplaySession implements AutoCloseable {
     }
 
     /** The log on show, or null while the file is first read or when it could not be opened at all. Any thread. */
-    public SessionLog log() {
+    public @Nullable SessionLog log() {
         SharedLog s = shared;
         return s == null ? null : s.log();
     }
 
     /** The log on show with its readers' hold on it: read it only between acquire and release. Any thread. */
-    public SharedLog sharedLog() {
+    public @Nullable SharedLog sharedLog() {
         return shared;
     }
 
     /** The replayer of the log on show, or null. Any thread. */
-    public Replayer replayer() {
+    public @Nullable Replayer replayer() {
         return replayer;
     }
 
@@ -341,7 +343,7 @@ public final class ReplaySession implements AutoCloseable {
     }
 
     /** The timeline of the log on show, filling in while its pass runs; null before any log. Any thread. */
-    public TimelineDensity density() {
+    public @Nullable TimelineDensity density() {
         TimelinePass p = pass;
         return p == null ? null : p.density();
     }

@@ -2,6 +2,7 @@ package org.stagecraft.replay.session;
 
 import java.util.function.Supplier;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.play.Replayer;
@@ -12,11 +13,11 @@ import org.stagecraft.replay.play.Replayer;
  * follows and a new reading of the file goes on after. Every move tells the view.
  */
 public final class ReplayTransport {
-    private final Supplier<Replayer> replayer;
+    private final Supplier<@Nullable Replayer> replayer;
     private final Runnable moved;
-    private volatile LogMessage lastPublished;
+    private volatile @Nullable LogMessage lastPublished;
 
-    ReplayTransport(Supplier<Replayer> replayer, Runnable moved) {
+    ReplayTransport(Supplier<@Nullable Replayer> replayer, Runnable moved) {
         this.replayer = replayer;
         this.moved = moved;
     }
@@ -111,17 +112,17 @@ public final class ReplayTransport {
     }
 
     /** The message published last (by a step, a selection or play), null after a seek. Any thread. */
-    public LogMessage lastPublished() {
+    public @Nullable LogMessage lastPublished() {
         return lastPublished;
     }
 
     /** What the replayer on show published, told by it or carried over from a replaced one. */
-    void published(LogMessage m) {
+    void published(@Nullable LogMessage m) {
         lastPublished = m;
     }
 
     /** Where the replay is in {@code log} when there is no replayer yet: its start, or 0 before any log. */
-    long position(SessionLog log) {
+    long position(@Nullable SessionLog log) {
         Replayer r = replayer.get();
         return r != null ? r.position() : log != null ? log.startNanos() : 0;
     }

@@ -3,6 +3,7 @@ package org.stagecraft.replay.writelog;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.Blobfinder;
 
@@ -10,7 +11,7 @@ import org.stagecraft.player.msg.Blobfinder;
 final class BlobfinderText implements PayloadText {
 
     @Override
-    public String cannotWrite(int type, int subtype, MessageBody body) {
+    public @Nullable String cannotWrite(int type, int subtype, MessageBody body) {
         return type == DATA && subtype == 1 && body instanceof Blobfinder.Blobs ? null
                 : "writelog writes only blobfinder blobs";
     }

@@ -3,6 +3,7 @@ package org.stagecraft.replay.writelog;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.Bumper;
 import org.stagecraft.player.msg.ByteArray;
@@ -14,7 +15,7 @@ import org.stagecraft.player.msg.ByteArray;
 final class BumperText implements PayloadText {
 
     @Override
-    public String cannotWrite(int type, int subtype, MessageBody body) {
+    public @Nullable String cannotWrite(int type, int subtype, MessageBody body) {
         if (type == DATA && subtype == 1 && body instanceof Bumper.State) {
             return null;
         }

@@ -3,6 +3,7 @@ package org.stagecraft.replay.writelog;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.Fiducial;
 import org.stagecraft.player.msg.Geometry.Bbox2d;
@@ -16,7 +17,7 @@ import org.stagecraft.player.msg.Geometry.Pose3d;
 final class FiducialText implements PayloadText {
 
     @Override
-    public String cannotWrite(int type, int subtype, MessageBody body) {
+    public @Nullable String cannotWrite(int type, int subtype, MessageBody body) {
         if (type == DATA && subtype == 1 && body instanceof Fiducial.Scan) {
             return null;
         }

@@ -1,5 +1,6 @@
 package org.stagecraft.replay.writelog;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.ByteArray;
 import org.stagecraft.player.msg.FloatArray;
@@ -15,7 +16,7 @@ import org.stagecraft.player.msg.Laser;
 final class LaserText implements PayloadText {
 
     @Override
-    public String cannotWrite(int type, int subtype, MessageBody body) {
+    public @Nullable String cannotWrite(int type, int subtype, MessageBody body) {
         if (type == DATA && subtype == 1 && body instanceof Laser.Scan) {
             return null;
         }

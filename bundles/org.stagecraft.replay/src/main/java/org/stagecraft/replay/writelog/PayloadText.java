@@ -1,5 +1,6 @@
 package org.stagecraft.replay.writelog;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 
 /**
@@ -11,7 +12,7 @@ interface PayloadText {
     int RESP_ACK = 4;
 
     /** Why a writelog file cannot hold this message (it is then skipped), or null when it can. */
-    String cannotWrite(int type, int subtype, MessageBody body);
+    @Nullable String cannotWrite(int type, int subtype, MessageBody body);
 
     /** A note to write on a comment line before the message, for what the text cannot say itself. */
     default LineNote noteFor(MessageBody body) {

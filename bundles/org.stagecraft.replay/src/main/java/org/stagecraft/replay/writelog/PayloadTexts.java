@@ -2,6 +2,7 @@ package org.stagecraft.replay.writelog;
 
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.msg.Blobfinder;
 import org.stagecraft.player.msg.Bumper;
 import org.stagecraft.player.msg.Fiducial;
@@ -28,7 +29,7 @@ final class PayloadTexts {
             Blobfinder.CODE, new BlobfinderText());
 
     /** @return the payload text of an interface code, or null when there is none */
-    static PayloadText of(int interf) {
+    static @Nullable PayloadText of(int interf) {
         return BY_INTERFACE.get(interf);
     }
 }

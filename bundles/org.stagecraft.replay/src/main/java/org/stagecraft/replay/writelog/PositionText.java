@@ -1,5 +1,6 @@
 package org.stagecraft.replay.writelog;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.Geometry.DeviceGeom;
 import org.stagecraft.player.msg.Position2d;
@@ -8,7 +9,7 @@ import org.stagecraft.player.msg.Position2d;
 final class PositionText implements PayloadText {
 
     @Override
-    public String cannotWrite(int type, int subtype, MessageBody body) {
+    public @Nullable String cannotWrite(int type, int subtype, MessageBody body) {
         if (type == DATA && subtype == 1 && body instanceof Position2d.State) {
             return null;
         }

@@ -3,6 +3,7 @@ package org.stagecraft.replay.writelog;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.DoubleArray;
 import org.stagecraft.player.msg.Geometry.Bbox3d;
@@ -18,7 +19,7 @@ import org.stagecraft.player.msg.Ranger;
 final class RangerText implements PayloadText {
 
     @Override
-    public String cannotWrite(int type, int subtype, MessageBody body) {
+    public @Nullable String cannotWrite(int type, int subtype, MessageBody body) {
         if (type == DATA && (subtype == 1 || subtype == 3) && body instanceof Ranger.Values) {
             return null;
         }

@@ -3,6 +3,7 @@ package org.stagecraft.replay.writelog;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.FloatArray;
 import org.stagecraft.player.msg.Geometry.Pose3d;
@@ -12,7 +13,7 @@ import org.stagecraft.player.msg.Sonar;
 final class SonarText implements PayloadText {
 
     @Override
-    public String cannotWrite(int type, int subtype, MessageBody body) {
+    public @Nullable String cannotWrite(int type, int subtype, MessageBody body) {
         if (type == DATA && subtype == 1 && body instanceof Sonar.Ranges) {
             return null;
         }

@@ -9,6 +9,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.PlayerEncoder;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.replay.log.LogProblem;
@@ -50,7 +51,7 @@ public final class WritelogImport {
         try (WritelogReader reader = new WritelogReader(writelog)) {
             for (WritelogRecord r = reader.next(); r != null; r = reader.next()) {
                 long t = WritelogReader.nanos(r.time());
-                Connection c = byRobot.get(r.robot());
+                @Nullable Connection c = byRobot.get(r.robot());
                 if (c == null) {
                     c = new Connection(byRobot.size() + 1, (int) r.robot());
                     byRobot.put(r.robot(), c);
@@ -76,7 +77,7 @@ public final class WritelogImport {
     }
 
     /** A Player ident banner naming the version the file names: "Player v.X.Y.Z", NUL-padded. */
-    static byte[] banner(String playerVersion) {
+    static byte[] banner(@Nullable String playerVersion) {
         String text = "Player v." + (playerVersion == null ? "unknown" : playerVersion);
         return Arrays.copyOf(text.getBytes(StandardCharsets.ISO_8859_1), BANNER_SIZE);
     }

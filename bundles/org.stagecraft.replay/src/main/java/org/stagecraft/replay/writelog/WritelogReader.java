@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.replay.log.LogProblem;
@@ -31,8 +32,8 @@ public final class WritelogReader implements Closeable {
     private final List<LogProblem> problems = new ArrayList<>();
     private long line;
     private long lastNanos;
-    private String playerVersion;
-    private String fileVersion;
+    private @Nullable String playerVersion;
+    private @Nullable String fileVersion;
     private boolean stopped;
     private LineNote note = LineNote.NONE;
 
@@ -51,7 +52,7 @@ public final class WritelogReader implements Closeable {
     }
 
     /** The next message line, or null at the end of the file. */
-    public WritelogRecord next() throws IOException {
+    public @Nullable WritelogRecord next() throws IOException {
         while (!stopped) {
             String text = in.readLine();
             if (text == null) {
@@ -91,12 +92,12 @@ public final class WritelogReader implements Closeable {
     }
 
     /** The Player version the file names in its metadata, or null. */
-    public String playerVersion() {
+    public @Nullable String playerVersion() {
         return playerVersion;
     }
 
     /** The file version the file names in its metadata, or null. */
-    public String fileVersion() {
+    public @Nullable String fileVersion() {
         return fileVersion;
     }
 

@@ -8,6 +8,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.TreeMap;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.codec.PlayerEncoder;
@@ -61,7 +62,7 @@ public final class WritelogWriter {
      * @param playerVersion the recorded Player's version (e.g. from its banner), or null if unknown
      * @param source        what the messages come from, for a comment line
      */
-    public WritelogWriter(Writer out, CodecRegistry registry, String playerVersion, String source) throws IOException {
+    public WritelogWriter(Writer out, CodecRegistry registry, @Nullable String playerVersion, String source) throws IOException {
         this.out = out;
         this.registry = registry;
         String version = playerVersion == null || playerVersion.isBlank() ? "unknown" : playerVersion.trim();

@@ -1,5 +1,6 @@
 package org.stagecraft.spy.hold;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.MessageHeader;
 
 /**
@@ -30,8 +31,8 @@ final class BoundaryTracker {
     private int interf;
     private int type;
     /** Made from the header bytes only when asked for: most messages need just interface and type. */
-    private MessageHeader current;
-    private String lostReason;
+    private @Nullable MessageHeader current;
+    private @Nullable String lostReason;
 
     Part part() {
         if (lostReason != null) {
@@ -50,7 +51,7 @@ final class BoundaryTracker {
     }
 
     /** Why boundaries were lost, or null. */
-    String lostReason() {
+    @Nullable String lostReason() {
         return lostReason;
     }
 
@@ -78,10 +79,12 @@ final class BoundaryTracker {
 
     /** The current message's header, once {@link #HEADER_DONE} was returned for it (until the next begins). */
     MessageHeader header() {
-        if (current == null) {
-            current = MessageHeader.read(header, 0);
+        MessageHeader c = current;
+        if (c == null) {
+            c = MessageHeader.read(header, 0);
+            current = c;
         }
-        return current;
+        return c;
     }
 
     /** The current message's interface code (valid like {@link #header()}). */

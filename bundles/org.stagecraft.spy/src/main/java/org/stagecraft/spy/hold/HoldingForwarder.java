@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicBoolean;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.proxy.ConnectionInfo;
@@ -49,7 +50,7 @@ public final class HoldingForwarder {
     private final BoundaryTracker tracker = new BoundaryTracker();
     private long upstreamOffset;
     /** Bytes of the chunk being relayed that are to be forwarded, written in one go. */
-    private byte[] pendBuf;
+    private byte @Nullable [] pendBuf;
     private int pendStart;
     private int pendLen;
     /** The current message's header is being kept back until it is complete (a hold was on at its start). */
@@ -182,7 +183,7 @@ public final class HoldingForwarder {
     }
 
     /** Why this connection's stream cannot be held (it is not Player messages), or null. */
-    public String problem() {
+    public @Nullable String problem() {
         synchronized (lock) {
             return tracker.lostReason();
         }
@@ -246,7 +247,7 @@ public final class HoldingForwarder {
             byte[] payload = motionPayload.toByteArray();
             MotionCommand.Device d = MotionCommand.Device.of(h);
             int state = MotionCommand.velState(h, payload);
-            Last before = devices.get(d);
+            @Nullable Last before = devices.get(d);
             devices.put(d, new Last(h, state >= 0 ? state : before != null ? before.velState() : -1));
             moving = MotionCommand.moving(h, payload);
         }

@@ -10,6 +10,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.LongSupplier;
 import java.util.stream.Collectors;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 
 /**
@@ -37,7 +38,7 @@ public final class RobotHold implements AutoCloseable {
     private boolean enabled;
     private long epoch;
     private long watchdogMillis;
-    private SilenceWatchdog watchdog;
+    private @Nullable SilenceWatchdog watchdog;
     private volatile boolean held;
     private volatile long currentEpoch;
     private volatile String reasonsText = "";
@@ -91,7 +92,7 @@ public final class RobotHold implements AutoCloseable {
      */
     public boolean release(HoldReason reason) {
         synchronized (this) {
-            Integer n = counts.get(reason);
+            @Nullable Integer n = counts.get(reason);
             if (n == null) {
                 return false;
             }
@@ -144,7 +145,7 @@ public final class RobotHold implements AutoCloseable {
      * last motion command asked its robot to move, hold (reason {@link HoldReason#WATCHDOG}) until that
      * program sends again. Null or zero turns it off. Needs holds enabled to act.
      */
-    public void setWatchdog(Duration timeout) {
+    public void setWatchdog(@Nullable Duration timeout) {
         SilenceWatchdog stop = null;
         synchronized (this) {
             long ms = timeout == null ? 0 : Math.max(0, timeout.toMillis());
@@ -184,7 +185,7 @@ public final class RobotHold implements AutoCloseable {
      * A message-aware forwarder for a new connection's program-to-Player direction, writing to
      * {@code upstream}; null when holds are off (then the relay copies bytes as always).
      */
-    public HoldingForwarder attach(ConnectionInfo connection, OutputStream upstream) {
+    public @Nullable HoldingForwarder attach(ConnectionInfo connection, OutputStream upstream) {
         if (!isEnabled()) {
             return null;
         }
@@ -194,7 +195,7 @@ public final class RobotHold implements AutoCloseable {
     }
 
     /** The connection ended. */
-    public void detach(HoldingForwarder f) {
+    public void detach(@Nullable HoldingForwarder f) {
         if (f != null && forwarders.remove(f)) {
             f.detached();
         }

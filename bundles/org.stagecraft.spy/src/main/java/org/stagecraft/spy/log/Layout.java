@@ -3,6 +3,7 @@ package org.stagecraft.spy.log;
 import java.nio.charset.StandardCharsets;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 
 import com.google.gson.JsonObject;
@@ -111,7 +112,7 @@ final class Layout {
         return utf8(o.toString());
     }
 
-    static byte[] diagnostic(int conn, Direction dir, long offset, String text) {
+    static byte[] diagnostic(int conn, @Nullable Direction dir, long offset, String text) {
         JsonObject o = new JsonObject();
         o.addProperty("event", "diagnostic");
         o.addProperty("conn", conn);

@@ -1,5 +1,7 @@
 package org.stagecraft.spy.log;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * One connection of a spy log.
  *
@@ -10,8 +12,8 @@ package org.stagecraft.spy.log;
  *                     ended, or cut off)
  * @param closeReason  why it closed, or null
  */
-public record LogConnection(int conn, int port, String client, String listen, String upstream, long openedNanos,
-        long closedNanos, String closeReason) {
+public record LogConnection(int conn, int port, @Nullable String client, @Nullable String listen, @Nullable String upstream, long openedNanos,
+        long closedNanos, @Nullable String closeReason) {
 
     public boolean closed() {
         return closedNanos >= 0;

@@ -1,5 +1,6 @@
 package org.stagecraft.spy.log;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 
 /**
@@ -73,6 +74,6 @@ public sealed interface LogEntry {
      *
      * @param dir the stream's direction, or null if the diagnostic is about the connection
      */
-    record Diagnostic(long timeNanos, int conn, Direction dir, long streamOffset, String text) implements LogEntry {
+    record Diagnostic(long timeNanos, int conn, @Nullable Direction dir, long streamOffset, String text) implements LogEntry {
     }
 }

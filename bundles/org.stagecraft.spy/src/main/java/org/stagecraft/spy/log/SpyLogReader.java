@@ -14,10 +14,12 @@ import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
 import java.util.NoSuchElementException;
+import java.util.Objects;
 import java.util.PriorityQueue;
 import java.util.Set;
 import java.util.TreeMap;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.mcap.Channel;
 import org.stagecraft.mcap.ChunkInfo;
 import org.stagecraft.mcap.Damage;
@@ -43,7 +45,7 @@ public final class SpyLogReader implements AutoCloseable {
         EVENTS, WIRE, OLD_WIRE, HOLD, OLD_HOLD, OTHER
     }
 
-    private record ChannelInfo(int id, String topic, Role role, int conn, int port, Direction dir,
+    private record ChannelInfo(int id, String topic, Role role, int conn, int port, @Nullable Direction dir,
             Map<String, String> metadata) {
         boolean wire() {
             return role == Role.WIRE || role == Role.OLD_WIRE;
@@ -67,7 +69,7 @@ public final class SpyLogReader implements AutoCloseable {
     private long eventCount;
     private long undefinedMessages;
     private int chunksRead;
-    private List<LogConnection> connections;
+    private @Nullable List<LogConnection> connections;
 
     private SpyLogReader(Path path, McapReader mcap) throws IOException {
         this.path = path;
@@ -78,7 +80,7 @@ public final class SpyLogReader implements AutoCloseable {
             channel(c);
         }
         for (Map.Entry<Integer, Long> e : mcap.messageCounts().entrySet()) {
-            ChannelInfo c = channels.get(e.getKey());
+            @Nullable ChannelInfo c = channels.get(e.getKey());
             if (c == null) {
                 undefinedMessages += e.getValue();
             } else if (c.events()) {
@@ -160,12 +162,12 @@ public final class SpyLogReader implements AutoCloseable {
     }
 
     /** The same, and the chunk's robot-hold entries into {@code holds} when it is not null. */
-    private List<LogEntry> readChunk(ChunkInfo c, List<HoldEntry> holds) throws IOException {
+    private List<LogEntry> readChunk(ChunkInfo c, @Nullable List<HoldEntry> holds) throws IOException {
         chunksRead++;
         List<LogEntry> out = new ArrayList<>();
         try {
             mcap.readChunk(c, m -> {
-                ChannelInfo info = channels.get(m.channel());
+                @Nullable ChannelInfo info = channels.get(m.channel());
                 if (info == null) {
                     Channel defined = mcap.channels().get(m.channel());
                     if (defined == null) {
@@ -243,7 +245,7 @@ public final class SpyLogReader implements AutoCloseable {
     }
 
     /** The entry of a message: times are log times (non-decreasing in the file's order). */
-    private static LogEntry entry(ChannelInfo c, Message m) throws IOException {
+    private static @Nullable LogEntry entry(ChannelInfo c, Message m) throws IOException {
         long t = m.logTime();
         if (c.events()) {
             return Layout.event(t, m.array(), m.offset(), m.length());
@@ -255,7 +257,7 @@ public final class SpyLogReader implements AutoCloseable {
             int reasonLen = r.u16();
             String reason = new String(r.bytes(reasonLen), StandardCharsets.UTF_8);
             byte[] bytes = r.bytes(r.remaining());
-            return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), offset, kind, bytes, reason, m.publishTime());
+            return new LogEntry.Wire(t, c.conn(), c.port(), Objects.requireNonNull(c.dir()), offset, kind, bytes, reason, m.publishTime());
         }
         if (c.role() != Role.WIRE) {
             return null; // a channel of another tool, or holds
@@ -280,7 +282,7 @@ public final class SpyLogReader implements AutoCloseable {
                 }
             }
         });
-        return new LogEntry.Wire(t, c.conn(), c.port(), c.dir(), v[1], Layout.kind((int) v[2]), bytes[0], reason[0],
+        return new LogEntry.Wire(t, c.conn(), c.port(), Objects.requireNonNull(c.dir()), v[1], Layout.kind((int) v[2]), bytes[0], reason[0],
                 m.publishTime());
     }
 
@@ -314,6 +316,7 @@ public final class SpyLogReader implements AutoCloseable {
 
     /** Every connection, by connection number, from the open and close events. */
     public synchronized List<LogConnection> connections() throws IOException {
+        List<LogConnection> connections = this.connections;
         if (connections == null) {
             Map<Integer, LogEntry.Opened> opened = new TreeMap<>();
             Map<Integer, LogEntry.Closed> closed = new TreeMap<>();
@@ -346,14 +349,15 @@ public final class SpyLogReader implements AutoCloseable {
             ids.addAll(ports.keySet());
             List<LogConnection> list = new ArrayList<>();
             for (int id : ids) {
-                LogEntry.Opened o = opened.get(id);
-                LogEntry.Closed x = closed.get(id);
-                Integer port = ports.get(id);
+                LogEntry.@Nullable Opened o = opened.get(id);
+                LogEntry.@Nullable Closed x = closed.get(id);
+                @Nullable Integer port = ports.get(id);
                 list.add(new LogConnection(id, port != null ? port : portOf(o != null ? o.listen() : null),
                         o != null ? o.client() : null, o != null ? o.listen() : null, o != null ? o.upstream() : null,
                         o != null ? o.timeNanos() : -1, x != null ? x.timeNanos() : -1, x != null ? x.reason() : null));
             }
             connections = List.copyOf(list);
+            this.connections = connections;
         }
         return connections;
     }
@@ -371,7 +375,7 @@ public final class SpyLogReader implements AutoCloseable {
             if (!c.wire()) {
                 continue;
             }
-            String client = c.metadata().get(Layout.META_CLIENT);
+            @Nullable String client = c.metadata().get(Layout.META_CLIENT);
             if (client == null) {
                 return List.of();
             }
@@ -381,7 +385,7 @@ public final class SpyLogReader implements AutoCloseable {
         return List.copyOf(byConn.values());
     }
 
-    private static int portOf(String address) {
+    private static int portOf(@Nullable String address) {
         if (address == null) {
             return -1;
         }

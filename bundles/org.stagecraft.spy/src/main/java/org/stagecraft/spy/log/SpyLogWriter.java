@@ -11,6 +11,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.TreeMap;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.mcap.McapWriter;
 import org.stagecraft.mcap.RecordBuffer;
 import org.stagecraft.player.wire.Direction;
@@ -140,7 +141,7 @@ public final class SpyLogWriter implements AutoCloseable {
 
     /** {@code header}, when not null, is re-encoded before {@code bytes} (its payload). */
     private void wire(long timeNanos, int conn, int port, Direction dir, long streamOffset, LogEntry.Kind kind,
-            MessageHeader header, byte[] bytes, String reason) throws IOException {
+            @Nullable MessageHeader header, byte[] bytes, String reason) throws IOException {
         int channel = wireChannel(conn, port, dir);
         synchronized (mcap) {
             RecordBuffer b = mcap.beginMessage(channel, logTime(timeNanos), timeNanos);
@@ -167,7 +168,7 @@ public final class SpyLogWriter implements AutoCloseable {
         wireCount++;
     }
 
-    public synchronized void diagnostic(long timeNanos, int conn, Direction dir, long streamOffset, String text)
+    public synchronized void diagnostic(long timeNanos, int conn, @Nullable Direction dir, long streamOffset, String text)
             throws IOException {
         event(timeNanos, Layout.diagnostic(conn, dir, streamOffset, text));
     }

@@ -2,6 +2,7 @@ package org.stagecraft.spy.log;
 
 import java.nio.charset.StandardCharsets;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.mcap.RecordBuffer;
 import org.stagecraft.mcap.RecordInput;
 import org.stagecraft.mcap.McapFormatException;
@@ -158,7 +159,7 @@ final class WireProto {
     }
 
     /** FieldDescriptorProto: name 1, number 3, label 4 (optional), type 5, type_name 6. */
-    private static RecordBuffer field(String name, int number, int type, String typeName) {
+    private static RecordBuffer field(String name, int number, int type, @Nullable String typeName) {
         RecordBuffer f = new RecordBuffer(64);
         string(f, 1, name);
         uint(f, 3, number);

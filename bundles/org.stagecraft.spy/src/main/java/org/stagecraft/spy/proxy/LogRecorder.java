@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.WireEvent;
@@ -67,11 +68,11 @@ public final class LogRecorder implements SpyRecorder {
     private boolean closed;
 
     /** The first failure of the log, or null. */
-    private volatile Throwable failure;
+    private volatile @Nullable Throwable failure;
     /** A force to the disk is running ({@link #forceAside()}). */
     private final java.util.concurrent.atomic.AtomicBoolean forcing = new java.util.concurrent.atomic.AtomicBoolean();
     /** A failed force, for the log thread to act on (it alone closes the writer). */
-    private volatile Throwable forceFailure;
+    private volatile @Nullable Throwable forceFailure;
 
     public LogRecorder(SpyLogWriter writer) {
         this.writer = writer;

@@ -19,6 +19,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.spy.hold.HoldAction;
 import org.stagecraft.spy.hold.HoldObserver;
@@ -244,8 +245,8 @@ public final class NetworkSpy implements AutoCloseable {
         final ConnectionInfo info;
         final AtomicInteger running = new AtomicInteger(2);
         /** The message-aware program-to-Player path when holds were enabled at accept; else null. */
-        volatile HoldingForwarder holding;
-        volatile String closeReason;
+        volatile @Nullable HoldingForwarder holding;
+        volatile @Nullable String closeReason;
 
         Relay(Socket client, Route route) {
             this.client = client;
@@ -281,7 +282,7 @@ public final class NetworkSpy implements AutoCloseable {
          * robot program's bytes wait meanwhile in its socket's receive buffer, so nothing is lost
          * or reordered. Returns null once connected, else the last refusal.
          */
-        String connectUpstream() {
+        @Nullable String connectUpstream() {
             long started = System.nanoTime();
             long graceNanos = upstreamGrace.toNanos();
             boolean waited = false;
@@ -414,7 +415,7 @@ public final class NetworkSpy implements AutoCloseable {
         }
     }
 
-    private void observerFailed(ConnectionInfo info, Throwable e) {
+    private void observerFailed(@Nullable ConnectionInfo info, Throwable e) {
         observerFailures.increment();
         long now = System.nanoTime();
         long last = lastFailureReport.get();

@@ -20,6 +20,7 @@ import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.wire.Direction;
@@ -191,7 +192,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private final Thread worker;
     private volatile boolean closing;
     /** Why observation stopped for good (the observation thread itself failed), or null. */
-    private volatile String dead;
+    private volatile @Nullable String dead;
 
     private final LongAdder messages = new LongAdder();
     private final LongAdder decodeProblems = new LongAdder();
@@ -200,11 +201,11 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private final LongAdder abandonedMessages = new LongAdder();
     private final LongAdder internalErrors = new LongAdder();
     private final AtomicLong lastFailureReport = new AtomicLong(Long.MIN_VALUE);
-    private volatile String firstFailure;
+    private volatile @Nullable String firstFailure;
 
     // owned by the worker thread
-    private SpyRecorder recorder;
-    private volatile String recorderError;
+    private @Nullable SpyRecorder recorder;
+    private volatile @Nullable String recorderError;
     private long lastFlushNanos = System.nanoTime();
     private final Set<ConnectionInfo> openConnections = new LinkedHashSet<>();
     /** What this round publishes, in order; handed to the bus at the end of the round (or before a release). */
@@ -216,7 +217,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
      * @param maxQueuedBytes how many forwarded bytes observation may hold in total (queued, or in
      *                       unfinished messages) before it drops or gives up observing some
      */
-    public ObservationPipeline(StreamBus bus, PlayerDecoder decoder, SpyRecorder recorder, long maxQueuedBytes) {
+    public ObservationPipeline(StreamBus bus, PlayerDecoder decoder, @Nullable SpyRecorder recorder, long maxQueuedBytes) {
         this.bus = bus;
         this.decoder = decoder;
         this.recorder = recorder;
@@ -632,12 +633,12 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     }
 
     /** The first failure of observation, as reported, or null if there was none. */
-    public String failure() {
+    public @Nullable String failure() {
         return firstFailure;
     }
 
     /** Why the spy log stopped, or null while it is fine (or there is none). */
-    public String recorderError() {
+    public @Nullable String recorderError() {
         return recorderError;
     }
 
@@ -853,7 +854,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             case HoldChanged h -> {
                 HoldState s = h.state();
                 record(r -> r.hold(new HoldEntry(h.t(), 0, 0, s.held() ? HoldEntry.Action.HOLD_ON : HoldEntry.Action.HOLD_OFF,
-                        0, 0, null, s.description())));
+                        0, 0, new byte[0], s.description())));
                 outbox.add(new StreamMessage(HoldStreams.STATE, h.t(), s));
             }
             case Stop s -> {
@@ -920,6 +921,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
      * unobserved. Either way what was written is closed properly.
      */
     private void record(RecorderCall call) {
+        SpyRecorder recorder = this.recorder;
         if (recorder == null) {
             return;
         }
@@ -932,7 +934,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             } catch (Throwable ignored) {
                 // already failing; the first error is the one reported
             }
-            recorder = null;
+            this.recorder = null;
             if (e instanceof RuntimeException re) {
                 throw re;
             }
@@ -948,7 +950,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             record(call);
         } catch (Throwable e) {
             internalErrors.increment();
-            report(SPY, recorderError);
+            report(SPY, String.valueOf(recorderError)); // set by record() before it throws
         }
     }
 }

@@ -6,6 +6,8 @@ import java.net.NetworkInterface;
 import java.net.SocketException;
 import java.net.UnknownHostException;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * One spied port: robot programs connect to {@code listen}; each connection is relayed to
  * {@code upstream}, where Player really listens.
@@ -66,7 +68,7 @@ public record Route(InetSocketAddress listen, InetSocketAddress upstream) {
         return of(DEFAULT_BIND, listenPort, upstreamHost, upstreamPort);
     }
 
-    public static Route of(String bindHost, int listenPort, String upstreamHost, int upstreamPort) {
+    public static Route of(@Nullable String bindHost, int listenPort, String upstreamHost, int upstreamPort) {
         try {
             return new Route(new InetSocketAddress(InetAddress.getByName(bindHost), listenPort),
                     new InetSocketAddress(InetAddress.getByName(upstreamHost), upstreamPort));

@@ -1,5 +1,6 @@
 package org.stagecraft.tools.ui;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.commands.ICommandService;
@@ -22,7 +23,7 @@ public final class CommandButtons {
             if (!d.isDisposed()) {
                 d.asyncExec(() -> {
                     if (PlatformUI.isWorkbenchRunning()) {
-                        ICommandService cs = PlatformUI.getWorkbench().getService(ICommandService.class);
+                        @Nullable ICommandService cs = PlatformUI.getWorkbench().getService(ICommandService.class);
                         if (cs != null) {
                             cs.refreshElements(commandId, null);
                         }

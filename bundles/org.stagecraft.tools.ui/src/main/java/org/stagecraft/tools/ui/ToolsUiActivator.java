@@ -1,5 +1,6 @@
 package org.stagecraft.tools.ui;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
 import org.osgi.framework.BundleActivator;
 import org.osgi.framework.BundleContext;
 import org.stagecraft.tools.ui.foxglove.FoxgloveLive;
@@ -12,11 +13,13 @@ import org.stagecraft.tools.ui.launch.RunningSessions;
  * with NoClassDefFoundErrors once their class loaders were gone.
  */
 public final class ToolsUiActivator implements BundleActivator {
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void start(BundleContext context) {
         // nothing to do: sessions register themselves when they start
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void stop(BundleContext context) {
         RunningSessions.stopAll();

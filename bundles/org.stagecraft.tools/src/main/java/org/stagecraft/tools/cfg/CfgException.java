@@ -2,24 +2,26 @@ package org.stagecraft.tools.cfg;
 
 import java.nio.file.Path;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /** A Player configuration file that cannot be used; the message starts with {@code file:line:}. */
 public final class CfgException extends Exception {
     private static final long serialVersionUID = 1L;
-    private final transient Path file;
+    private final transient @Nullable Path file;
     private final int line;
 
-    public CfgException(Path file, int line, String problem) {
+    public CfgException(@Nullable Path file, int line, String problem) {
         super(file + (line > 0 ? ":" + line : "") + ": " + problem);
         this.file = file;
         this.line = line;
     }
 
-    public CfgException(Path file, int line, String problem, Throwable cause) {
+    public CfgException(@Nullable Path file, int line, String problem, Throwable cause) {
         this(file, line, problem);
         initCause(cause);
     }
 
-    public Path file() {
+    public @Nullable Path file() {
         return file;
     }
 

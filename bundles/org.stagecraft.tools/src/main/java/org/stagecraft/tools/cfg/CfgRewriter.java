@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * Writes the copy of a Player configuration that Player really runs on: every local port moved as
@@ -68,7 +69,7 @@ public final class CfgRewriter {
                 if (!a.file().equals(s.file()) || !a.address().isLocal() || a.address().port() < 0) {
                     continue;
                 }
-                Integer moved = portMap.get(a.address().port());
+                @Nullable Integer moved = portMap.get(a.address().port());
                 if (moved != null) {
                     reps.add(new Replacement(a.token(), a.address().withPort(moved)));
                 }

@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.tools.cfg.CfgToken.Kind;
 
 /**
@@ -33,7 +34,7 @@ public final class PlayerCfg {
      * One {@code key value} or {@code key [ values ]} pair inside a section (or at the top level:
      * section null, sectionId 0). Entries of one section share its sectionId.
      */
-    public record Entry(String section, int sectionId, String key, CfgToken keyToken, List<CfgToken> values) {
+    public record Entry(@Nullable String section, int sectionId, String key, CfgToken keyToken, List<CfgToken> values) {
     }
 
     /** A device address and where it is written. */
@@ -67,7 +68,7 @@ public final class PlayerCfg {
     }
 
     private static void readInto(Path file, List<Source> sources, List<AddressUse> addresses, Deque<Path> including,
-            Path includedFrom, int includeLine) throws CfgException {
+            @Nullable Path includedFrom, int includeLine) throws CfgException {
         if (including.contains(file)) {
             throw new CfgException(includedFrom, includeLine, "include cycle: " + file + " includes itself (through "
                     + including + ")");
@@ -198,7 +199,7 @@ public final class PlayerCfg {
         }
 
         /** Reads items until the end of the file or a closing parenthesis (left for the caller). */
-        private void items(String section, int sectionId, int depth) throws CfgException {
+        private void items(@Nullable String section, int sectionId, int depth) throws CfgException {
             while (pos < tokens.size() && !tokens.get(pos).is(Kind.CLOSE_PAREN)) {
                 CfgToken key = tokens.get(pos++);
                 if (!key.is(Kind.WORD)) {

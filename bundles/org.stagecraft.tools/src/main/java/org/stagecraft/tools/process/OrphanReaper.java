@@ -11,6 +11,8 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * Kills the tools this JVM started when the JVM dies, however it dies (SIGKILL, a crash, a lost
  * display), without a shutdown hook.
@@ -91,10 +93,10 @@ public final class OrphanReaper {
     private static final OrphanReaper SHARED = new OrphanReaper();
 
     private final Set<Long> registered = new LinkedHashSet<>();
-    private Process script;
-    private OutputStream toScript;
+    private @Nullable Process script;
+    private @Nullable OutputStream toScript;
     /** Why the script cannot run, once it has failed to start; then registering is a no-op. */
-    private String unavailable;
+    private @Nullable String unavailable;
 
     OrphanReaper() {
     }
@@ -109,7 +111,7 @@ public final class OrphanReaper {
      *
      * @return null, or why the tool is not protected (for the tool's console)
      */
-    public synchronized String register(long pid) {
+    public synchronized @Nullable String register(long pid) {
         registered.add(pid);
         return send("+" + pid);
     }
@@ -122,12 +124,12 @@ public final class OrphanReaper {
     }
 
     /** The reaper's own process, once started (for tests). */
-    synchronized ProcessHandle process() {
+    synchronized @Nullable ProcessHandle process() {
         return script != null ? script.toHandle() : null;
     }
 
     /** Called with the lock held. */
-    private String send(String line) {
+    private @Nullable String send(String line) {
         if (unavailable != null) {
             return unavailable;
         }

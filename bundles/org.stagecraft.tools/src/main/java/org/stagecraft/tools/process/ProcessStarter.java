@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 
 import com.pty4j.PtyProcessBuilder;
+import org.eclipse.jdt.annotation.Nullable;
 
 /**
  * Starts a tool's process on a pseudo-terminal (pty4j), or on plain pipes when no terminal can be
@@ -23,7 +24,7 @@ public final class ProcessStarter {
     public static final String PTY_PROPERTY = "stagecraft.tools.pty";
 
     /** A started process, and a note for the tool's console when it is not on a terminal. */
-    public record Started(Process process, boolean onTerminal, String note) {
+    public record Started(Process process, boolean onTerminal, @Nullable String note) {
     }
 
     private final boolean tryTerminal;
@@ -41,7 +42,7 @@ public final class ProcessStarter {
      * @param environment added to (and overriding) this JVM's environment
      * @throws IOException if the program cannot be run at all (on pipes either)
      */
-    public Started start(List<String> command, Path workingDir, Map<String, String> environment) throws IOException {
+    public Started start(List<String> command, @Nullable Path workingDir, Map<String, String> environment) throws IOException {
         String note = null;
         if (tryTerminal) {
             try {
@@ -62,7 +63,7 @@ public final class ProcessStarter {
         return new Started(pb.start(), false, note);
     }
 
-    private static Process onTerminal(List<String> command, Path workingDir, Map<String, String> environment)
+    private static Process onTerminal(List<String> command, @Nullable Path workingDir, Map<String, String> environment)
             throws IOException {
         String program = command.get(0);
         // pty4j execs without a PATH search of its own when the name has no slash: resolve it as

@@ -16,6 +16,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.tools.process.ToolListener.Stream;
 
 /**
@@ -35,9 +36,9 @@ public final class SupervisedTool {
     private final ProcessStarter starter;
     private final CompletableFuture<ToolState> finished = new CompletableFuture<>();
     private ToolState state = ToolState.NEW;
-    private Run current;
+    private @Nullable Run current;
     private int restarts;
-    private Integer lastExitCode;
+    private @Nullable Integer lastExitCode;
     private boolean stopRequested;
     private boolean firstStartPending = true;
 
@@ -87,12 +88,12 @@ public final class SupervisedTool {
     }
 
     /** The exit code of the last process that ended, or null if none has. */
-    public synchronized Integer lastExitCode() {
+    public synchronized @Nullable Integer lastExitCode() {
         return lastExitCode;
     }
 
     /** The running process, if any. */
-    public synchronized ProcessHandle process() {
+    public synchronized @Nullable ProcessHandle process() {
         return current != null && current.process.isAlive() ? current.handle : null;
     }
 
@@ -204,8 +205,9 @@ public final class SupervisedTool {
         Process p = started.process();
         Run run = new Run(p);
         current = run;
-        if (started.note() != null) {
-            output(Stream.SUPERVISOR, started.note());
+        String note = started.note();
+        if (note != null) {
+            output(Stream.SUPERVISOR, note);
         }
         output(Stream.SUPERVISOR, "started " + String.join(" ", spec.command()) + " (pid " + p.pid() + ")");
         // if the IDE dies without stopping it (killed, crashed), the reaper takes the tool's tree down
@@ -356,7 +358,7 @@ public final class SupervisedTool {
     }
 
     /** Null when ready, else why not. */
-    private String awaitReady(Run run) {
+    private @Nullable String awaitReady(Run run) {
         long deadline = System.nanoTime() + spec.readyWithin().toNanos();
         Set<Integer> open = new HashSet<>();
         while (true) {

@@ -1,5 +1,7 @@
 package org.stagecraft.tools.process;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * What a supervised tool reports. Called on the supervisor's own threads; implementations hand
  * work to their UI thread themselves and must not block.
@@ -13,14 +15,14 @@ public interface ToolListener {
      * A line of output (without the line break). {@link Stream#SUPERVISOR} lines are the manager's
      * own notes: started, ready, exit codes, restarts.
      */
-    void output(SupervisedTool tool, Stream stream, String line);
+    void output(@Nullable SupervisedTool tool, Stream stream, String line);
 
     /** The tool moved from {@code from} to {@code to}; {@code detail} says why (e.g. "exit code 3"). */
     void stateChanged(SupervisedTool tool, ToolState from, ToolState to, String detail);
 
     ToolListener NONE = new ToolListener() {
         @Override
-        public void output(SupervisedTool tool, Stream stream, String line) {
+        public void output(@Nullable SupervisedTool tool, Stream stream, String line) {
         }
 
         @Override

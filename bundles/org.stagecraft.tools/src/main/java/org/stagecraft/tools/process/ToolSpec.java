@@ -6,6 +6,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * How to run one external tool.
  *
@@ -14,7 +16,7 @@ import java.util.Objects;
  * @param environment added to (and overriding) the inherited environment
  * @param readyWithin how long the readiness check may take at each start
  */
-public record ToolSpec(String name, List<String> command, Path workingDir, Map<String, String> environment,
+public record ToolSpec(String name, List<String> command, @Nullable Path workingDir, Map<String, String> environment,
         Readiness readiness, RestartPolicy restart, Duration readyWithin) {
 
     public static final Duration DEFAULT_READY_WITHIN = Duration.ofSeconds(30);

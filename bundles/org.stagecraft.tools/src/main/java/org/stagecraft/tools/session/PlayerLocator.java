@@ -5,6 +5,8 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * Decides which {@code player} a session runs, and with what environment. In this order:
  * <ol>
@@ -42,7 +44,7 @@ public final class PlayerLocator {
      * @param prefix      the install prefix it comes from, or null
      * @param environment Player's whole extra environment (the launch's own Player variables included)
      */
-    public record Located(String program, Source source, Path prefix, Map<String, String> environment) {
+    public record Located(String program, Source source, @Nullable Path prefix, Map<String, String> environment) {
         public Located {
             environment = Map.copyOf(environment);
         }
@@ -60,14 +62,14 @@ public final class PlayerLocator {
     }
 
     /** The install prefix, whether or not anything is installed there; null without HOME. */
-    public Path installPrefix() {
-        String explicit = processEnvironment.get(PREFIX_VARIABLE);
+    public @Nullable Path installPrefix() {
+        @Nullable String explicit = processEnvironment.get(PREFIX_VARIABLE);
         if (explicit != null && !explicit.isBlank()) {
             return Path.of(explicit);
         }
-        String data = processEnvironment.get("XDG_DATA_HOME");
+        @Nullable String data = processEnvironment.get("XDG_DATA_HOME");
         if (data == null || data.isBlank()) {
-            String home = processEnvironment.get("HOME");
+            @Nullable String home = processEnvironment.get("HOME");
             if (home == null || home.isBlank()) {
                 return null;
             }
@@ -82,7 +84,7 @@ public final class PlayerLocator {
      * @param launchEnvironment  the launch configuration's Player environment (wins over what is found here,
      *                           except that LD_LIBRARY_PATH keeps the prefix's library directory first)
      */
-    public Located locate(String launchSetting, String preference, Map<String, String> launchEnvironment) {
+    public Located locate(@Nullable String launchSetting, @Nullable String preference, Map<String, String> launchEnvironment) {
         if (isSet(launchSetting)) {
             return named(launchSetting.trim(), Source.LAUNCH_CONFIGURATION, launchEnvironment);
         }
@@ -112,7 +114,7 @@ public final class PlayerLocator {
      * The install prefix {@code program} is the Player of ({@code PREFIX/bin/player} with the
      * {@code PREFIX/env.sh} the install script writes), or null.
      */
-    static Path installOf(String program) {
+    static @Nullable Path installOf(String program) {
         Path p;
         try {
             p = Path.of(program);
@@ -133,12 +135,12 @@ public final class PlayerLocator {
         env.put("PLAYERPATH", lib);
         env.put("STAGEPATH", prefix.resolve("share").resolve("stage") + ":" + prefix.resolve("lib").resolve("Stage-4.3"));
         env.putAll(launchEnvironment);
-        String existing = launchEnvironment.getOrDefault("LD_LIBRARY_PATH", processEnvironment.get("LD_LIBRARY_PATH"));
+        @Nullable String existing = launchEnvironment.getOrDefault("LD_LIBRARY_PATH", processEnvironment.get("LD_LIBRARY_PATH"));
         env.put("LD_LIBRARY_PATH", existing == null || existing.isBlank() ? lib : lib + ":" + existing);
         return env;
     }
 
-    private static boolean isSet(String s) {
+    private static boolean isSet(@Nullable String s) {
         return s != null && !s.isBlank();
     }
 }

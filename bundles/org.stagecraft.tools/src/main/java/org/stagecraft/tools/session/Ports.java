@@ -7,6 +7,8 @@ import java.net.ServerSocket;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /** Free-port questions, asked the only reliable way: by binding. */
 public final class Ports {
     private Ports() {
@@ -38,7 +40,7 @@ public final class Ports {
     }
 
     /** Whether {@code port} can be bound on {@code host} now. */
-    public static boolean isFree(String host, int port) {
+    public static boolean isFree(@Nullable String host, int port) {
         try (ServerSocket s = new ServerSocket()) {
             s.setReuseAddress(true);
             s.bind(new InetSocketAddress(InetAddress.getByName(host), port));

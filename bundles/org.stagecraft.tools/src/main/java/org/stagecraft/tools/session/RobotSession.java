@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.spy.hold.RobotHold;
@@ -50,15 +51,15 @@ public final class RobotSession implements AutoCloseable {
     private final SessionConfig config;
     private final CodecRegistry codecs;
     private final ToolListener listener;
-    private PlayerCfg cfg;
+    private @Nullable PlayerCfg cfg;
     private final Map<Integer, Integer> portMap = new LinkedHashMap<>();
-    private ScratchDirectory scratch;
-    private CfgRewriter.Rewritten rewritten;
+    private @Nullable ScratchDirectory scratch;
+    private CfgRewriter.@Nullable Rewritten rewritten;
     private final List<SupervisedTool> tools = new ArrayList<>();
-    private SupervisedTool player;
-    private StreamBus bus;
-    private ObservationPipeline pipeline;
-    private NetworkSpy spy;
+    private @Nullable SupervisedTool player;
+    private @Nullable StreamBus bus;
+    private @Nullable ObservationPipeline pipeline;
+    private @Nullable NetworkSpy spy;
     private boolean closed;
     private SessionState state = SessionState.STARTING;
     private final CompletableFuture<String> failed = new CompletableFuture<>();
@@ -72,7 +73,7 @@ public final class RobotSession implements AutoCloseable {
     /** Passes everything on, and sees Player going down for good while the session runs. */
     private final ToolListener watcher = new ToolListener() {
         @Override
-        public void output(SupervisedTool tool, Stream stream, String line) {
+        public void output(@Nullable SupervisedTool tool, Stream stream, String line) {
             listener.output(tool, stream, line);
         }
 
@@ -117,11 +118,13 @@ public final class RobotSession implements AutoCloseable {
     }
 
     private void startParts() throws SessionException {
+        PlayerCfg cfg;
         try {
             cfg = PlayerCfg.read(config.cfg());
         } catch (CfgException e) {
             throw new SessionException("bad Player configuration: " + e.getMessage(), e);
         }
+        this.cfg = cfg;
         Map<Integer, PlayerCfg.AddressUse> ports = cfg.listenPorts(config.defaultPort());
         if (ports.isEmpty()) {
             throw new SessionException(cfg.file() + ": no driver provides a device, so Player would serve nothing", null);
@@ -143,7 +146,8 @@ public final class RobotSession implements AutoCloseable {
                 portMap.put(original, free.get(i++));
             }
             int movedDefault = defaultListed ? portMap.get(config.defaultPort()) : free.get(i);
-            scratch = ScratchDirectory.create(config.scratchRoot() != null ? config.scratchRoot() : ScratchDirectory.defaultRoot());
+            Path scratchRoot = config.scratchRoot();
+            scratch = ScratchDirectory.create(scratchRoot != null ? scratchRoot : ScratchDirectory.defaultRoot());
             rewritten = CfgRewriter.write(cfg, portMap, scratch.path());
 
             for (ToolSpec t : config.tools()) {
@@ -184,10 +188,12 @@ public final class RobotSession implements AutoCloseable {
         for (Map.Entry<Integer, Integer> m : portMap.entrySet()) {
             routes.add(Route.of(config.bindHost(), m.getKey(), "127.0.0.1", m.getValue()));
         }
-        bus = new StreamBus();
+        StreamBus bus = new StreamBus();
+        this.bus = bus;
         LogRecorder recorder = null;
-        if (config.log() != null) {
-            Path parent = config.log().toAbsolutePath().getParent();
+        Path log = config.log();
+        if (log != null) {
+            Path parent = log.toAbsolutePath().getParent();
             if (parent != null) {
                 Files.createDirectories(parent);
             }
@@ -196,13 +202,14 @@ public final class RobotSession implements AutoCloseable {
             meta.put("cfg", cfg.file().toString());
             meta.put("routes", routes.toString());
             try {
-                recorder = new LogRecorder(SpyLogWriter.create(config.log(), meta));
+                recorder = new LogRecorder(SpyLogWriter.create(log, meta));
             } catch (IOException e) {
-                throw new IOException("cannot write the spy log " + config.log() + ": " + e.getMessage(), e);
+                throw new IOException("cannot write the spy log " + log + ": " + e.getMessage(), e);
             }
         }
         pipeline = new ObservationPipeline(bus, new PlayerDecoder(codecs), recorder, ObservationPipeline.DEFAULT_MAX_QUEUED_BYTES);
-        spy = new NetworkSpy(routes, pipeline);
+        NetworkSpy spy = new NetworkSpy(routes, pipeline);
+        this.spy = spy;
         configureHolds(spy, config.spy());
         spy.start();
     }
@@ -221,7 +228,7 @@ public final class RobotSession implements AutoCloseable {
      * The robot hold of this session's spy (null before the spy exists): what the debugger's
      * suspend and the user's emergency stop act on.
      */
-    public RobotHold holds() {
+    public @Nullable RobotHold holds() {
         NetworkSpy s = spy;
         return s == null ? null : s.holds();
     }
@@ -230,7 +237,7 @@ public final class RobotSession implements AutoCloseable {
         return config;
     }
 
-    public PlayerCfg cfg() {
+    public @Nullable PlayerCfg cfg() {
         return cfg;
     }
 
@@ -240,11 +247,11 @@ public final class RobotSession implements AutoCloseable {
     }
 
     /** The copy Player runs on. */
-    public CfgRewriter.Rewritten rewritten() {
+    public CfgRewriter.@Nullable Rewritten rewritten() {
         return rewritten;
     }
 
-    public Path scratchDirectory() {
+    public @Nullable Path scratchDirectory() {
         return scratch == null ? null : scratch.path();
     }
 
@@ -253,19 +260,19 @@ public final class RobotSession implements AutoCloseable {
         return List.copyOf(tools);
     }
 
-    public SupervisedTool player() {
+    public @Nullable SupervisedTool player() {
         return player;
     }
 
-    public NetworkSpy spy() {
+    public @Nullable NetworkSpy spy() {
         return spy;
     }
 
-    public ObservationPipeline pipeline() {
+    public @Nullable ObservationPipeline pipeline() {
         return pipeline;
     }
 
-    public StreamBus bus() {
+    public @Nullable StreamBus bus() {
         return bus;
     }
 

@@ -12,6 +12,8 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicInteger;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
+
 /**
  * A session's private directory for the rewritten cfg files, under a common root
  * ({@code java.io.tmpdir/stagecraft-sessions} unless told otherwise). Its name starts with the
@@ -79,12 +81,14 @@ public final class ScratchDirectory implements AutoCloseable {
             return;
         }
         Files.walkFileTree(p, new SimpleFileVisitor<>() {
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public FileVisitResult visitFile(Path file, BasicFileAttributes attrs) throws IOException {
                 Files.deleteIfExists(file);
                 return FileVisitResult.CONTINUE;
             }
 
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public FileVisitResult postVisitDirectory(Path d, IOException exc) throws IOException {
                 Files.deleteIfExists(d);

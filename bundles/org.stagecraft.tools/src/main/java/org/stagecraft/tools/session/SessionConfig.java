@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.tools.process.RestartPolicy;
 import org.stagecraft.tools.process.ToolSpec;
 
@@ -23,8 +24,8 @@ import org.stagecraft.tools.process.ToolSpec;
  * @param spy           robot holds, the silence watchdog and the upstream grace of the spy (null: {@link SpyOptions#DEFAULT})
  */
 public record SessionConfig(Path cfg, List<String> playerCommand, int defaultPort, Map<String, String> playerEnvironment,
-        RestartPolicy playerRestart, Duration playerReadyWithin, List<ToolSpec> tools, Path log, String bindHost,
-        Path scratchRoot, SpyOptions spy) {
+        RestartPolicy playerRestart, Duration playerReadyWithin, List<ToolSpec> tools, @Nullable Path log, @Nullable String bindHost,
+        @Nullable Path scratchRoot, SpyOptions spy) {
 
     public static final int PLAYER_DEFAULT_PORT = 6665;
 
@@ -71,7 +72,7 @@ public record SessionConfig(Path cfg, List<String> playerCommand, int defaultPor
                 bindHost, scratchRoot, spy);
     }
 
-    public SessionConfig withLog(Path file) {
+    public SessionConfig withLog(@Nullable Path file) {
         return new SessionConfig(cfg, playerCommand, defaultPort, playerEnvironment, playerRestart, playerReadyWithin, tools,
                 file, bindHost, scratchRoot, spy);
     }

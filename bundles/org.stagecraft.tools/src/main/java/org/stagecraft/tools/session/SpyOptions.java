@@ -3,6 +3,7 @@ package org.stagecraft.tools.session;
 import java.time.Duration;
 import java.util.Objects;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.proxy.NetworkSpy;
 
 /**
@@ -13,7 +14,7 @@ import org.stagecraft.spy.proxy.NetworkSpy;
  * @param holdWhenSuspended  hold the robots while the program is suspended in the debugger
  * @param watchdog           the silence watchdog's timeout, or null when it is off
  */
-public record SpyOptions(Duration upstreamGrace, boolean holdWhenSuspended, Duration watchdog) {
+public record SpyOptions(Duration upstreamGrace, boolean holdWhenSuspended, @Nullable Duration watchdog) {
 
     /** The defaults of a new launch configuration: hold when suspended, no watchdog, the spy's grace. */
     public static final SpyOptions DEFAULT = new SpyOptions(NetworkSpy.DEFAULT_UPSTREAM_GRACE, true, null);

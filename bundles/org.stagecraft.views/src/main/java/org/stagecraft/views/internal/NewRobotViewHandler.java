@@ -5,6 +5,8 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.eclipse.core.commands.AbstractHandler;
 import org.eclipse.core.commands.ExecutionEvent;
 import org.eclipse.core.commands.ExecutionException;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.ui.IViewReference;
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.IWorkbenchWindow;
@@ -16,8 +18,9 @@ import org.stagecraft.views.RobotView;
 public final class NewRobotViewHandler extends AbstractHandler {
     private static final AtomicInteger NEXT = new AtomicInteger(1);
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
-    public Object execute(ExecutionEvent event) throws ExecutionException {
+    public @Nullable Object execute(ExecutionEvent event) throws ExecutionException {
         IWorkbenchWindow window = HandlerUtil.getActiveWorkbenchWindowChecked(event);
         IWorkbenchPage page = window.getActivePage();
         try {

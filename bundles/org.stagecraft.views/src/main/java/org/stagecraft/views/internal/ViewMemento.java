@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.ui.IMemento;
 import org.stagecraft.scene.ViewSetup;
 
@@ -30,7 +31,7 @@ public final class ViewMemento {
     }
 
     /** The setup, or null if the memento holds none (or one from a newer, incompatible version). */
-    public static ViewSetup read(IMemento m, Consumer<String> problems) {
+    public static @Nullable ViewSetup read(IMemento m, Consumer<String> problems) {
         Integer version = m.getInteger(VERSION);
         if (version == null) {
             return null;

@@ -3,6 +3,7 @@ package org.stagecraft.views.renderers;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.Fiducial;
 import org.stagecraft.scene.DeviceAddress;
@@ -32,7 +33,7 @@ public class FiducialRenderer extends ShapeRenderer {
     private final GlBatch markers = batch(new GlBatch(GL.GL_TRIANGLES, Tint.LAYER));
     private final GlBatch headings = batch(new GlBatch(GL.GL_LINES, new Tint(0.5f, 1, true)).size(2));
     private final List<Label> labels = new ArrayList<>();
-    private GLUT glut;
+    private @Nullable GLUT glut;
 
     @Override
     protected void build(RenderInput in) {

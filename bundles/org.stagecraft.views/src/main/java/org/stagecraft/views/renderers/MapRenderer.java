@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.zip.DataFormatException;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.player.msg.MapInterface;
 import org.stagecraft.scene.LayerSpec;
@@ -24,11 +25,11 @@ import com.jogamp.opengl.GL2;
  * once and in pieces, so this renderer subscribes lossless and pastes every tile it is given.
  */
 public class MapRenderer extends StreamRenderer {
-    private OccupancyImage image;
+    private @Nullable OccupancyImage image;
     private final List<MapInterface.Tile> early = new ArrayList<>();
     private int texture;
     private boolean uploaded;
-    private String problem;
+    private @Nullable String problem;
 
     @Override
     public DeliveryPolicy deliveryPolicy() {
@@ -68,7 +69,7 @@ public class MapRenderer extends StreamRenderer {
     }
 
     /** Why the last tile could not be shown, or null. */
-    public String problem() {
+    public @Nullable String problem() {
         return problem;
     }
 

@@ -1,5 +1,7 @@
 package org.stagecraft.projects.ui.layout;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /** The robot program a new Robot Project starts with. */
 public enum ProgramTemplate {
     /** The example that turns to face the nearest object (laser:0); never drives. */
@@ -14,10 +16,10 @@ public enum ProgramTemplate {
 
     private final String label;
     private final String fileName;
-    private final String templatePath;
+    private final @Nullable String templatePath;
     private final String description;
 
-    ProgramTemplate(String label, String fileName, String templatePath, String description) {
+    ProgramTemplate(String label, String fileName, @Nullable String templatePath, String description) {
         this.label = label;
         this.fileName = fileName;
         this.templatePath = templatePath;
@@ -34,7 +36,7 @@ public enum ProgramTemplate {
     }
 
     /** Where its text is among the templates ({@link TemplateSource}); null for a generated program. */
-    public String templatePath() {
+    public @Nullable String templatePath() {
         return templatePath;
     }
 

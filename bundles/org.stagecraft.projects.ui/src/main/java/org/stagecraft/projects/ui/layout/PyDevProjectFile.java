@@ -18,6 +18,7 @@ import javax.xml.transform.TransformerFactory;
 import javax.xml.transform.dom.DOMSource;
 import javax.xml.transform.stream.StreamResult;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.w3c.dom.Document;
 import org.w3c.dom.Element;
 import org.w3c.dom.Node;
@@ -118,7 +119,7 @@ public final class PyDevProjectFile {
      * @param clientFolder absolute path of the client's folder, or null if it is not installed
      * @return whether anything changed
      */
-    public boolean configure(String sourceFolder, String clientFolder) {
+    public boolean configure(String sourceFolder, @Nullable String clientFolder) {
         boolean changed = false;
         if (paths(SOURCE_PATH).isEmpty()) {
             changed |= addPath(SOURCE_PATH, sourcePath(sourceFolder));
@@ -177,7 +178,7 @@ public final class PyDevProjectFile {
     }
 
     /** A plain property's value, or null. */
-    public String property(String name) {
+    public @Nullable String property(String name) {
         Element p = find(PROPERTY, name);
         return p == null ? null : p.getTextContent().trim();
     }
@@ -217,7 +218,7 @@ public final class PyDevProjectFile {
         }
     }
 
-    private Element find(String element, String name) {
+    private @Nullable Element find(String element, String name) {
         for (Element e : children(doc.getDocumentElement(), element)) {
             if (name.equals(e.getAttribute("name"))) {
                 return e;

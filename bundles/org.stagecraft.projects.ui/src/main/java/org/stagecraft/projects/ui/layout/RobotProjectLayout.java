@@ -63,7 +63,8 @@ public final class RobotProjectLayout {
         for (String path : WORLD_FILES) {
             out.add(new ProjectFile(path, read(templates, path)));
         }
-        byte[] text = program.templatePath() != null ? read(templates, program.templatePath())
+        String template = program.templatePath();
+        byte[] text = template != null ? read(templates, template)
                 : emptyProgram(projectName).getBytes(StandardCharsets.UTF_8);
         out.add(new ProjectFile(programPath(program), text));
         return out;

@@ -6,6 +6,8 @@ import java.util.concurrent.atomic.AtomicReference;
 
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IStatus;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.dialogs.ErrorDialog;
 import org.eclipse.jface.viewers.IStructuredSelection;
 import org.eclipse.jface.wizard.Wizard;
@@ -25,17 +27,18 @@ public final class NewRobotProjectWizard extends Wizard implements INewWizard {
     /** The text editor, by id (org.eclipse.ui.editors), for .py files when no editor is registered for them. */
     static final String TEXT_EDITOR = "org.eclipse.ui.DefaultTextEditor";
 
-    private IWorkbench workbench;
-    private RobotProjectPage page;
-    private RobotProjects.Created created;
-    private String presetName;
-    private ProgramTemplate presetTemplate;
+    private @Nullable IWorkbench workbench;
+    private @Nullable RobotProjectPage page;
+    private RobotProjects.@Nullable Created created;
+    private @Nullable String presetName;
+    private @Nullable ProgramTemplate presetTemplate;
 
     public NewRobotProjectWizard() {
         setWindowTitle("New Robot Project");
         setNeedsProgressMonitor(true);
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void init(IWorkbench wb, IStructuredSelection selection) {
         this.workbench = wb;
@@ -53,12 +56,12 @@ public final class NewRobotProjectWizard extends Wizard implements INewWizard {
         addPage(page);
     }
 
-    public RobotProjectPage page() {
+    public @Nullable RobotProjectPage page() {
         return page;
     }
 
     /** What the last finish made, or null. */
-    public RobotProjects.Created created() {
+    public RobotProjects.@Nullable Created created() {
         return created;
     }
 

@@ -3,6 +3,7 @@ package org.stagecraft.projects.ui.wizard;
 import java.util.EnumMap;
 import java.util.Map;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
 import org.eclipse.jface.dialogs.Dialog;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
@@ -27,6 +28,7 @@ public final class RobotProjectPage extends WizardNewProjectCreationPage {
         setDescription("A robot program in Python with a Stage world to run it in: Pioneer 2DX with sonar and laser.");
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void createControl(Composite parent) {
         super.createControl(parent);

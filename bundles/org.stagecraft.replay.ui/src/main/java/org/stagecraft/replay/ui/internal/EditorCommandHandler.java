@@ -3,6 +3,8 @@ package org.stagecraft.replay.ui.internal;
 import org.eclipse.core.commands.AbstractHandler;
 import org.eclipse.core.commands.ExecutionEvent;
 import org.eclipse.core.commands.ExecutionException;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.ui.PartInitException;
 import org.eclipse.ui.handlers.HandlerUtil;
 import org.stagecraft.replay.ui.SessionLogEditor;
@@ -12,8 +14,9 @@ import org.stagecraft.replay.ui.SessionLogEditor;
  * Session Log editor (plugin.xml activates it only while one is the active editor).
  */
 public final class EditorCommandHandler extends AbstractHandler {
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
-    public Object execute(ExecutionEvent event) throws ExecutionException {
+    public @Nullable Object execute(ExecutionEvent event) throws ExecutionException {
         String id = event.getCommand().getId();
         EditorCommand command = EditorCommand.of(id).orElseThrow(() -> new ExecutionException("not a Session Log command: " + id));
         if (!(HandlerUtil.getActiveEditor(event) instanceof SessionLogEditor editor)) {

@@ -4,6 +4,7 @@ import java.net.URI;
 import java.nio.file.Path;
 
 import org.eclipse.core.resources.IFile;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.ui.IEditorInput;
 import org.eclipse.ui.IPathEditorInput;
 import org.eclipse.ui.IURIEditorInput;
@@ -14,8 +15,8 @@ public final class EditorInputs {
     }
 
     /** @return the file, or null when the input is not a local file */
-    public static Path path(IEditorInput input) {
-        IFile file = input.getAdapter(IFile.class);
+    public static @Nullable Path path(IEditorInput input) {
+        @Nullable IFile file = input.getAdapter(IFile.class);
         if (file != null && file.getLocation() != null) {
             return file.getLocation().toPath();
         }

@@ -2,10 +2,13 @@ package org.stagecraft.replay.ui.internal;
 
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.Objects;
 
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.jobs.IJobChangeEvent;
 import org.eclipse.core.runtime.jobs.JobChangeAdapter;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.dialogs.ErrorDialog;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.swt.SWT;
@@ -46,7 +49,7 @@ public final class ExportMenu {
     }
 
     /** The inspector's stream pattern and text as an export filter over [from, until] seconds. */
-    public static ExportFilter filterOf(SessionLogEditor editor, Double fromSeconds, Double untilSeconds) {
+    public static ExportFilter filterOf(SessionLogEditor editor, @Nullable Double fromSeconds, @Nullable Double untilSeconds) {
         var f = editor.inspector().filter();
         var pattern = f.patternText().isEmpty() ? null
                 : org.stagecraft.replay.analysis.StreamSelector.parse(f.patternText(), editor.columns().registry());
@@ -76,7 +79,7 @@ public final class ExportMenu {
         }
     }
 
-    private static Path ask(Shell shell, SessionLogEditor editor, String extension) {
+    private static @Nullable Path ask(Shell shell, SessionLogEditor editor, String extension) {
         FileDialog d = new FileDialog(shell, SWT.SAVE);
         d.setOverwrite(true);
         d.setFilterExtensions(new String[] { extension, "*" });
@@ -89,8 +92,10 @@ public final class ExportMenu {
     }
 
     private static void run(Shell shell, SessionLogEditor editor, LogExport.Kind kind, ExportFilter filter, Path out) {
-        var job = LogExport.start(editor.file(), kind, filter, editor.columns().registry(), out);
+        // an editor with a log has its file
+        var job = LogExport.start(Objects.requireNonNull(editor.file()), kind, filter, editor.columns().registry(), out);
         job.addJobChangeListener(new JobChangeAdapter() {
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public void done(IJobChangeEvent event) {
                 IStatus s = event.getResult();

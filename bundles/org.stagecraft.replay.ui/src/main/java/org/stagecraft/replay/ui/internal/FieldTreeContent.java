@@ -3,6 +3,8 @@ package org.stagecraft.replay.ui.internal;
 import java.util.List;
 import java.util.Locale;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.viewers.ITreeContentProvider;
 import org.stagecraft.player.codec.MessageBody;
 import org.stagecraft.replay.fields.Field;
@@ -16,11 +18,13 @@ public final class FieldTreeContent implements ITreeContentProvider {
         return FieldTree.of(body);
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public Object[] getElements(Object input) {
         return getChildren(input);
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public Object[] getChildren(Object parent) {
         if (!(parent instanceof Field f)) {
@@ -35,11 +39,13 @@ public final class FieldTreeContent implements ITreeContentProvider {
         return out;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
-    public Object getParent(Object element) {
+    public @Nullable Object getParent(Object element) {
         return null;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public boolean hasChildren(Object element) {
         Field f = field(element);
@@ -50,11 +56,11 @@ public final class FieldTreeContent implements ITreeContentProvider {
     record Element(int index, Field field) {
     }
 
-    private static Field field(Object element) {
+    private static @Nullable Field field(Object element) {
         return element instanceof Element e ? e.field() : element instanceof Field f ? f : null;
     }
 
-    public static String name(Object element) {
+    public static @Nullable String name(Object element) {
         if (element instanceof Element e) {
             return "[" + e.index() + "]";
         }

@@ -13,6 +13,8 @@ import org.eclipse.core.runtime.IExecutableExtension;
 import org.eclipse.core.runtime.QualifiedName;
 import org.eclipse.core.runtime.content.IContentDescription;
 import org.eclipse.core.runtime.content.ITextContentDescriber;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.replay.log.LogFormat;
 import org.stagecraft.replay.log.SessionLogs;
 
@@ -24,7 +26,7 @@ import org.stagecraft.replay.log.SessionLogs;
  * stands for.
  */
 public final class HeaderDescriber implements ITextContentDescriber, IExecutableExtension {
-    private LogFormat format;
+    private @Nullable LogFormat format;
 
     public HeaderDescriber() {
     }
@@ -34,6 +36,7 @@ public final class HeaderDescriber implements ITextContentDescriber, IExecutable
         this.format = format;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void setInitializationData(IConfigurationElement config, String property, Object data) {
         if (data instanceof Hashtable<?, ?> parameters && parameters.get("format") instanceof String f) {
@@ -41,11 +44,13 @@ public final class HeaderDescriber implements ITextContentDescriber, IExecutable
         }
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public int describe(InputStream contents, IContentDescription description) throws IOException {
         return matches(contents.readNBytes(SessionLogs.HEAD)) ? VALID : INVALID;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public int describe(Reader contents, IContentDescription description) throws IOException {
         // the formats are UTF-8 (traces) or ASCII (writelog): the characters' UTF-8 bytes are the file's

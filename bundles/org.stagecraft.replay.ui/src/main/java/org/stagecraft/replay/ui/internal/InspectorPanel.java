@@ -5,6 +5,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.resource.JFaceResources;
 import org.eclipse.jface.viewers.ColumnLabelProvider;
 import org.eclipse.jface.viewers.TreeViewer;
@@ -55,15 +56,15 @@ public final class InspectorPanel {
     /** The robot hold's colour (as on the timeline): program messages held back from Player. */
     private final Color heldBack = new Color(226, 214, 248);
     private volatile HoldMarks holds = HoldMarks.none();
-    private SharedLog shared;
-    private SessionLog log;
+    private @Nullable SharedLog shared;
+    private @Nullable SessionLog log;
     private MessageColumns columns;
     private MessageFilter filter;
     private MessageWindow window = new MessageWindow(java.util.List.of(), 0, true, true);
     private boolean loading;
     /** The replay position the current window was read around. */
     private long readAt;
-    private LogMessage detailed;
+    private @Nullable LogMessage detailed;
 
     /**
      * @param replayPosition where the replay is now (a new filter reads its window there)
@@ -163,7 +164,7 @@ public final class InspectorPanel {
     }
 
     /** The entry whose fields and bytes are shown. */
-    public LogMessage detailed() {
+    public @Nullable LogMessage detailed() {
         return detailed;
     }
 
@@ -201,7 +202,7 @@ public final class InspectorPanel {
      * The replay moved to {@code position} after publishing {@code last}: selects its row, reading a
      * new window when the position left the one held.
      */
-    public void follow(long position, LogMessage last) {
+    public void follow(long position, @Nullable LogMessage last) {
         if (log == null || loading) {
             return;
         }
@@ -217,9 +218,9 @@ public final class InspectorPanel {
         select(last);
     }
 
-    private void select(LogMessage last) {
+    private void select(@Nullable LogMessage last) {
         int i = window.indexOf(last);
-        if (i >= 0) {
+        if (i >= 0 && last != null) { // found: not null
             table.setSelection(i);
             table.showSelection();
             showDetails(last);
@@ -248,7 +249,7 @@ public final class InspectorPanel {
                 : MessageWindow.around(l, f, edge, 2 * HALF_WINDOW, 1, SCAN_LIMIT), null);
     }
 
-    private void pageAround(long position, LogMessage last) {
+    private void pageAround(long position, @Nullable LogMessage last) {
         SharedLog s = shared;
         if (s == null) {
             return;
@@ -263,7 +264,7 @@ public final class InspectorPanel {
     }
 
     /** Reads a window off the UI thread; only the newest request's result is shown. */
-    private void load(SharedLog s, WindowRead read, LogMessage select) {
+    private void load(@Nullable SharedLog s, WindowRead read, @Nullable LogMessage select) {
         long g = generation.incrementAndGet();
         loading = true;
         status.setText("reading\u2026");
@@ -290,7 +291,7 @@ public final class InspectorPanel {
         });
     }
 
-    private void shown(long g, MessageWindow w, String error, LogMessage select) {
+    private void shown(long g, @Nullable MessageWindow w, @Nullable String error, @Nullable LogMessage select) {
         if (table.isDisposed() || g != generation.get()) {
             return;
         }

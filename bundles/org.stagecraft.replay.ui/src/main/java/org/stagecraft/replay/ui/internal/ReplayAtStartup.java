@@ -6,6 +6,7 @@ import java.nio.file.Path;
 
 import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.Platform;
+import org.eclipse.jdt.annotation.NonNullByDefault;
 import org.eclipse.ui.IStartup;
 import org.eclipse.ui.IWorkbench;
 import org.eclipse.ui.IWorkbenchListener;
@@ -78,11 +79,13 @@ public final class ReplayAtStartup implements IStartup {
     /** An imported trace lives in a temporary spy log, which closing deletes. */
     private static void closeAtShutdown(Running running, ILog log) {
         PlatformUI.getWorkbench().addWorkbenchListener(new IWorkbenchListener() {
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public boolean preShutdown(IWorkbench workbench, boolean forced) {
                 return true;
             }
 
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public void postShutdown(IWorkbench workbench) {
                 try {

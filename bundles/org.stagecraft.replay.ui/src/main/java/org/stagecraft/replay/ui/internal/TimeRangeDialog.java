@@ -2,6 +2,8 @@ package org.stagecraft.replay.ui.internal;
 
 import java.util.Locale;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.dialogs.Dialog;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
@@ -16,9 +18,9 @@ import org.eclipse.swt.widgets.Text;
 final class TimeRangeDialog extends Dialog {
     private final double length;
     private final String filter;
-    private Text fromText, untilText;
-    private Label problem;
-    private Double from, until;
+    private @Nullable Text fromText, untilText;
+    private @Nullable Label problem;
+    private @Nullable Double from, until;
 
     TimeRangeDialog(Shell shell, double length, String filter) {
         super(shell);
@@ -26,12 +28,14 @@ final class TimeRangeDialog extends Dialog {
         this.filter = filter;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     protected void configureShell(Shell shell) {
         super.configureShell(shell);
         shell.setText("Export to CSV");
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     protected Control createDialogArea(Composite parent) {
         Composite c = (Composite) super.createDialogArea(parent);
@@ -69,16 +73,16 @@ final class TimeRangeDialog extends Dialog {
         super.okPressed();
     }
 
-    private static Double seconds(String text) {
+    private static @Nullable Double seconds(String text) {
         String t = text.strip().replace(',', '.');
         return t.isEmpty() ? null : Double.valueOf(t);
     }
 
-    Double from() {
+    @Nullable Double from() {
         return from;
     }
 
-    Double until() {
+    @Nullable Double until() {
         return until;
     }
 }

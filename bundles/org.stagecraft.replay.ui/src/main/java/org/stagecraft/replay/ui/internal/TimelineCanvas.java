@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.LongConsumer;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.graphics.Color;
 import org.stagecraft.replay.log.HoldMarks;
@@ -27,7 +28,7 @@ public final class TimelineCanvas {
 
     private final Canvas canvas;
     private final LongConsumer onSeek;
-    private TimelineDensity.Snapshot snapshot;
+    private TimelineDensity.@Nullable Snapshot snapshot;
     private long start, end = 1;
     private long position = Long.MIN_VALUE;
     private List<Long> stops = List.of();
@@ -75,7 +76,7 @@ public final class TimelineCanvas {
         canvas.redraw();
     }
 
-    public void setSnapshot(TimelineDensity.Snapshot s) {
+    public void setSnapshot(TimelineDensity.@Nullable Snapshot s) {
         snapshot = s;
         if (s != null) {
             setRange(s.startNanos(), s.endNanos());
@@ -84,7 +85,7 @@ public final class TimelineCanvas {
         canvas.redraw();
     }
 
-    public TimelineDensity.Snapshot snapshot() {
+    public TimelineDensity.@Nullable Snapshot snapshot() {
         return snapshot;
     }
 

@@ -10,6 +10,7 @@ import org.eclipse.debug.core.ILaunch;
 import org.eclipse.debug.core.model.IProcess;
 import org.eclipse.debug.core.model.IStreamMonitor;
 import org.eclipse.debug.core.model.IStreamsProxy;
+import org.eclipse.jdt.annotation.NonNullByDefault;
 
 /**
  * One part of a Robot Session (Player, a user tool, the Network Spy) as a process of the session's
@@ -42,6 +43,7 @@ public final class SessionPartProcess implements IProcess {
             return err;
         }
 
+        @NonNullByDefault({}) // the parameters as the unannotated library gives them
         @Override
         public void write(String input) throws IOException {
             control.write(input);
@@ -105,11 +107,13 @@ public final class SessionPartProcess implements IProcess {
         return streams;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public synchronized void setAttribute(String key, String value) {
         attributes.put(key, value);
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public synchronized String getAttribute(String key) {
         return attributes.get(key);
@@ -123,6 +127,7 @@ public final class SessionPartProcess implements IProcess {
         return exitValue;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public <T> T getAdapter(Class<T> adapter) {
         if (adapter.isInstance(this)) {

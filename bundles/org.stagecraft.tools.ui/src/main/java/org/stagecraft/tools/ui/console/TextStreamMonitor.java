@@ -5,6 +5,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 
 import org.eclipse.debug.core.IStreamListener;
 import org.eclipse.debug.core.model.IFlushableStreamMonitor;
+import org.eclipse.jdt.annotation.NonNullByDefault;
 
 /**
  * One output stream of a session part as the debug console reads it: text appended by the Tool
@@ -26,6 +27,7 @@ public final class TextStreamMonitor implements IFlushableStreamMonitor {
         }
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public synchronized void addListener(IStreamListener listener) {
         listeners.add(listener);
@@ -36,6 +38,7 @@ public final class TextStreamMonitor implements IFlushableStreamMonitor {
         return contents.toString();
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public synchronized void removeListener(IStreamListener listener) {
         listeners.remove(listener);

@@ -10,6 +10,7 @@ import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.preferences.IEclipsePreferences.IPreferenceChangeListener;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.core.streams.WorkbenchBus;
 import org.stagecraft.foxglove.live.BusRelay;
 import org.stagecraft.foxglove.live.FoxgloveServer;
@@ -32,10 +33,10 @@ public final class FoxgloveLive {
         }
     };
     // guarded by this
-    private FoxgloveServer server;
-    private BusRelay relay;
-    private String servingAddress;
-    private String problem;
+    private @Nullable FoxgloveServer server;
+    private @Nullable BusRelay relay;
+    private @Nullable String servingAddress;
+    private @Nullable String problem;
     private boolean following;
 
     private FoxgloveLive() {
@@ -69,10 +70,11 @@ public final class FoxgloveLive {
             if (on) {
                 try {
                     InetSocketAddress a = FoxgloveLivePreferences.parse(address);
-                    server = FoxgloveServer.start(a, "Stagecraft", FoxgloveServer.DEFAULT_MAX_QUEUED_FRAMES);
-                    relay = BusRelay.start(WorkbenchBus.get(), server, LiveScene.converter(), BusRelay.DEFAULT_CAPACITY);
+                    FoxgloveServer started = FoxgloveServer.start(a, "Stagecraft", FoxgloveServer.DEFAULT_MAX_QUEUED_FRAMES);
+                    server = started;
+                    relay = BusRelay.start(WorkbenchBus.get(), started, LiveScene.converter(), BusRelay.DEFAULT_CAPACITY);
                     servingAddress = address;
-                    server.onNotice(n -> ILog.of(getClass()).log(new Status(IStatus.INFO, PLUGIN, "Foxglove live view: " + n)));
+                    started.onNotice(n -> ILog.of(getClass()).log(new Status(IStatus.INFO, PLUGIN, "Foxglove live view: " + n)));
                 } catch (IOException | IllegalArgumentException e) {
                     stopServing();
                     problem = "Foxglove live view: " + e.getMessage();
@@ -112,17 +114,17 @@ public final class FoxgloveLive {
     }
 
     /** Where viewers connect, or null when not serving. */
-    public synchronized URI uri() {
+    public synchronized @Nullable URI uri() {
         return server == null ? null : server.uri();
     }
 
     /** Why the last start failed, or null. */
-    public synchronized String problem() {
+    public synchronized @Nullable String problem() {
         return problem;
     }
 
     /** The server's counters, or null when not serving. */
-    public synchronized FoxgloveServer.Counters counters() {
+    public synchronized FoxgloveServer.@Nullable Counters counters() {
         return server == null ? null : server.counters();
     }
 

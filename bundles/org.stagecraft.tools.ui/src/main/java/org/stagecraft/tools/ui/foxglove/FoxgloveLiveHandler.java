@@ -5,6 +5,8 @@ import java.util.Map;
 import org.eclipse.core.commands.AbstractHandler;
 import org.eclipse.core.commands.ExecutionEvent;
 import org.eclipse.core.commands.ExecutionException;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.ui.commands.IElementUpdater;
 import org.eclipse.ui.menus.UIElement;
 import org.stagecraft.tools.ui.CommandButtons;
@@ -23,8 +25,9 @@ public final class FoxgloveLiveHandler extends AbstractHandler implements IEleme
         FoxgloveLive.get().addListener(refresh);
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
-    public Object execute(ExecutionEvent event) throws ExecutionException {
+    public @Nullable Object execute(ExecutionEvent event) throws ExecutionException {
         FoxgloveLive.get().followPreferences();
         try {
             FoxgloveLivePreferences.setEnabled(!FoxgloveLivePreferences.enabled());
@@ -35,6 +38,7 @@ public final class FoxgloveLiveHandler extends AbstractHandler implements IEleme
         return null;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void updateElement(UIElement element, @SuppressWarnings("rawtypes") Map parameters) {
         FoxgloveLive live = FoxgloveLive.get();

@@ -1,5 +1,7 @@
 package org.stagecraft.tools.ui.foxglove;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.preference.PreferencePage;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
@@ -15,15 +17,17 @@ import org.osgi.service.prefs.BackingStoreException;
 
 /** Preferences &gt; Stagecraft Tools &gt; Foxglove Live: on/off and the address ([ADDR:]PORT). */
 public final class FoxgloveLivePreferencePage extends PreferencePage implements IWorkbenchPreferencePage {
-    private Button enabled;
-    private Text address;
+    private @Nullable Button enabled;
+    private @Nullable Text address;
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void init(IWorkbench workbench) {
         setDescription("Serve the live streams of the workbench (every Robot Session's spy) over the Foxglove WebSocket"
                 + " protocol: in Foxglove or Lichtblick, open a Foxglove WebSocket connection to ws://localhost:PORT.");
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     protected Control createContents(Composite parent) {
         Composite c = new Composite(parent, SWT.NONE);

@@ -24,6 +24,7 @@ import org.eclipse.debug.core.ILaunchDelegate;
 import org.eclipse.debug.core.ILaunchManager;
 import org.eclipse.debug.core.model.IProcess;
 import org.eclipse.core.runtime.Status;
+import org.eclipse.jdt.annotation.Nullable;
 import org.osgi.framework.Bundle;
 import org.stagecraft.tools.ui.prefs.ToolPreferences;
 
@@ -127,7 +128,7 @@ final class RobotProgram {
         if (folder.isEmpty()) {
             return env;
         }
-        String base = env.get(PythonClientPath.VARIABLE);
+        @Nullable String base = env.get(PythonClientPath.VARIABLE);
         if (base == null) {
             try {
                 base = pyDevPythonpath(wc);
@@ -167,7 +168,7 @@ final class RobotProgram {
     }
 
     /** The same for the plain interpreter: {@code env} is null when the launch inherits everything. */
-    private static String[] withClientPath(String[] env, ILaunchManager lm) {
+    private static String @Nullable [] withClientPath(String @Nullable [] env, ILaunchManager lm) {
         Optional<String> folder = PythonClientPath.folder();
         if (folder.isEmpty()) {
             return env;

@@ -11,6 +11,8 @@ import org.eclipse.debug.core.ILaunch;
 import org.eclipse.debug.core.ILaunchConfiguration;
 import org.eclipse.debug.core.ILaunchesListener2;
 import org.eclipse.debug.core.model.LaunchConfigurationDelegate;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.core.extensions.Contributions;
 import org.stagecraft.tools.session.RobotSession;
 import org.stagecraft.tools.session.SessionException;
@@ -28,10 +30,11 @@ public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegat
     /** The running sessions' parts, by launch (for tests and the Tools view). */
     private static final java.util.Map<ILaunch, SessionParts> RUNNING = new java.util.concurrent.ConcurrentHashMap<>();
 
-    public static SessionParts partsOf(ILaunch launch) {
+    public static @Nullable SessionParts partsOf(ILaunch launch) {
         return RUNNING.get(launch);
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void launch(ILaunchConfiguration configuration, String mode, ILaunch launch, IProgressMonitor monitor)
             throws CoreException {
@@ -73,6 +76,7 @@ public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegat
     /** Terminate or removal of the launch stops the session; afterwards the new log appears in the project. */
     private static void stopWhenLaunchEnds(ILaunch launch, SessionParts parts, SessionSettings settings) {
         ILaunchesListener2 listener = new ILaunchesListener2() {
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public void launchesTerminated(ILaunch[] launches) {
                 for (ILaunch l : launches) {
@@ -82,6 +86,7 @@ public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegat
                 }
             }
 
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public void launchesRemoved(ILaunch[] launches) {
                 for (ILaunch l : launches) {
@@ -91,10 +96,12 @@ public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegat
                 }
             }
 
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public void launchesAdded(ILaunch[] launches) {
             }
 
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public void launchesChanged(ILaunch[] launches) {
             }

@@ -17,6 +17,8 @@ import org.eclipse.debug.core.ILaunchConfigurationWorkingCopy;
 import org.eclipse.debug.core.ILaunchManager;
 import org.eclipse.debug.ui.DebugUITools;
 import org.eclipse.debug.ui.ILaunchShortcut;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.viewers.ISelection;
 import org.eclipse.jface.viewers.IStructuredSelection;
 import org.eclipse.ui.IEditorPart;
@@ -31,19 +33,21 @@ import org.eclipse.ui.PlatformUI;
  */
 public final class RobotSessionShortcut implements ILaunchShortcut {
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void launch(ISelection selection, String mode) {
         if (selection instanceof IStructuredSelection s && s.getFirstElement() instanceof IAdaptable a) {
-            IFile f = a.getAdapter(IFile.class);
+            @Nullable IFile f = a.getAdapter(IFile.class);
             if (f != null) {
                 launch(f, mode);
             }
         }
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void launch(IEditorPart editor, String mode) {
-        IFile f = editor.getEditorInput().getAdapter(IFile.class);
+        @Nullable IFile f = editor.getEditorInput().getAdapter(IFile.class);
         if (f != null) {
             launch(f, mode);
         }

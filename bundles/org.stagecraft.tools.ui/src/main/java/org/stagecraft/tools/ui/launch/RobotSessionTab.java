@@ -7,6 +7,8 @@ import org.eclipse.core.runtime.CoreException;
 import org.eclipse.debug.core.ILaunchConfiguration;
 import org.eclipse.debug.core.ILaunchConfigurationWorkingCopy;
 import org.eclipse.debug.ui.AbstractLaunchConfigurationTab;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.window.Window;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
@@ -25,17 +27,18 @@ import org.stagecraft.tools.session.SpyOptions;
  * how the spy treats robot programs: upstream grace, robot holds while suspended, the silence watchdog.
  */
 public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
-    private Text cfg;
-    private Text program;
-    private Text player;
-    private Text port;
-    private Text restart;
-    private Text logFolder;
-    private Text grace;
-    private Button holdWhenSuspended;
-    private Button watchdog;
-    private Text watchdogSeconds;
+    private @Nullable Text cfg;
+    private @Nullable Text program;
+    private @Nullable Text player;
+    private @Nullable Text port;
+    private @Nullable Text restart;
+    private @Nullable Text logFolder;
+    private @Nullable Text grace;
+    private @Nullable Button holdWhenSuspended;
+    private @Nullable Button watchdog;
+    private @Nullable Text watchdogSeconds;
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void createControl(Composite parent) {
         Composite c = new Composite(parent, SWT.NONE);
@@ -112,6 +115,7 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         return ms;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void setDefaults(ILaunchConfigurationWorkingCopy c) {
         c.setAttribute(LaunchAttributes.DEFAULT_PORT, SessionConfig.PLAYER_DEFAULT_PORT);
@@ -123,6 +127,7 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         c.setAttribute(LaunchAttributes.UPSTREAM_GRACE_SECONDS, (int) SpyOptions.DEFAULT.upstreamGrace().toSeconds());
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void initializeFrom(ILaunchConfiguration c) {
         try {
@@ -145,6 +150,7 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         }
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void performApply(ILaunchConfigurationWorkingCopy c) {
         c.setAttribute(LaunchAttributes.CFG, cfg.getText().trim());
@@ -171,6 +177,7 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         }
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public boolean isValid(ILaunchConfiguration launchConfig) {
         setErrorMessage(null);

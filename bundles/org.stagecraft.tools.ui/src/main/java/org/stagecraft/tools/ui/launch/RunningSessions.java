@@ -7,6 +7,7 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 
 import org.eclipse.core.runtime.Status;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.tools.process.ProcessTree;
 import org.stagecraft.tools.process.SupervisedTool;
 import org.stagecraft.tools.session.RobotSession;
@@ -26,7 +27,7 @@ import org.stagecraft.tools.session.RobotSession;
 public final class RunningSessions {
     private static final Duration LAST_RESORT_GRACE = Duration.ofSeconds(2);
     private static final Set<SessionParts> RUNNING = ConcurrentHashMap.newKeySet();
-    private static Thread lastResort;
+    private static @Nullable Thread lastResort;
 
     private RunningSessions() {
     }
@@ -82,8 +83,9 @@ public final class RunningSessions {
                 continue;
             }
             List<SupervisedTool> tools = new ArrayList<>(s.tools());
-            if (s.player() != null) {
-                tools.add(s.player());
+            SupervisedTool player = s.player();
+            if (player != null) {
+                tools.add(player);
             }
             for (SupervisedTool t : tools) {
                 ProcessHandle h = t.process();

@@ -2,9 +2,11 @@ package org.stagecraft.tools.ui.launch;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
 
 import org.eclipse.debug.core.ILaunch;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.hold.HoldListener;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.hold.RobotHold;
@@ -26,10 +28,10 @@ public final class SessionHolds implements AutoCloseable {
 
     private final SessionParts parts;
     private final RobotHold hold;
-    private final SuspendHold suspend;
+    private final @Nullable SuspendHold suspend;
     private final HoldListener toToolsView = this::show;
 
-    private SessionHolds(SessionParts parts, RobotHold hold, SuspendHold suspend) {
+    private SessionHolds(SessionParts parts, RobotHold hold, @Nullable SuspendHold suspend) {
         this.parts = parts;
         this.hold = hold;
         this.suspend = suspend;
@@ -37,7 +39,7 @@ public final class SessionHolds implements AutoCloseable {
 
     /** Wires a session that has just started (its spy exists). */
     static SessionHolds attach(SessionParts parts, RobotSession session) {
-        RobotHold hold = session.holds();
+        RobotHold hold = Objects.requireNonNull(session.holds()); // it has just started: its spy exists
         SuspendHold suspend = session.config().spy().holdWhenSuspended()
                 ? new SuspendHold(hold, parts::launches).start()
                 : null;
@@ -50,7 +52,7 @@ public final class SessionHolds implements AutoCloseable {
     }
 
     /** The holds of the session that {@code launch} belongs to (its own launch or a linked one), or null. */
-    public static SessionHolds of(ILaunch launch) {
+    public static @Nullable SessionHolds of(ILaunch launch) {
         for (SessionHolds h : RUNNING.values()) {
             if (h.parts.launches().contains(launch)) {
                 return h;
@@ -73,7 +75,7 @@ public final class SessionHolds implements AutoCloseable {
     }
 
     /** The debugger listener, or null when the session's "hold while suspended" is off. */
-    public SuspendHold suspendHold() {
+    public @Nullable SuspendHold suspendHold() {
         return suspend;
     }
 

@@ -5,12 +5,14 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 
 import org.eclipse.core.runtime.ILog;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.debug.core.DebugException;
 import org.eclipse.debug.core.ILaunch;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.core.streams.WorkbenchBus;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.spy.proxy.SpyNotice;
@@ -37,15 +39,15 @@ public final class SessionParts implements ToolListener {
     private final String sessionName;
     private final Map<String, SessionPartProcess> parts = new LinkedHashMap<>();
     private final List<ILaunch> linkedLaunches = new ArrayList<>();
-    private volatile RobotSession session;
-    private SessionPartProcess spy;
+    private volatile @Nullable RobotSession session;
+    private @Nullable SessionPartProcess spy;
     private boolean stopping;
     /** Why the session failed (Player gone for good), or null. */
-    private volatile String failure;
+    private volatile @Nullable String failure;
     /** The session's bus republished on the workbench bus, where the Robot Views listen. */
-    private volatile Subscription toWorkbench;
+    private volatile @Nullable Subscription toWorkbench;
     /** The robot hold's IDE wiring (debugger suspend, emergency stop, Tools view), once started. */
-    private volatile SessionHolds holds;
+    private volatile @Nullable SessionHolds holds;
 
     public SessionParts(ILaunch launch, String sessionName) {
         this.launch = launch;
@@ -56,19 +58,19 @@ public final class SessionParts implements ToolListener {
         return sessionName;
     }
 
-    public RobotSession session() {
+    public @Nullable RobotSession session() {
         return session;
     }
 
     /** The process of a part ("Player", a tool's name, {@value #SPY_PART}), or null. */
-    public synchronized SessionPartProcess part(String name) {
+    public synchronized @Nullable SessionPartProcess part(String name) {
         return parts.get(name);
     }
 
     /** Called once the session runs: shows the spy as a part of its own. */
     public void started(RobotSession s) {
         this.session = s;
-        toWorkbench = WorkbenchBus.forward(s.bus());
+        toWorkbench = WorkbenchBus.forward(Objects.requireNonNull(s.bus())); // a running session has its bus
         // stopped when this plug-in stops at the latest (else Player would outlive the IDE and keep its ports)
         RunningSessions.add(this);
         SessionPartProcess p;
@@ -123,7 +125,7 @@ public final class SessionParts implements ToolListener {
     }
 
     /** Why the session failed, or null if it has not. */
-    public String failure() {
+    public @Nullable String failure() {
         return failure;
     }
 
@@ -147,12 +149,12 @@ public final class SessionParts implements ToolListener {
     }
 
     /** The session's robot hold in the IDE (null until the session runs). */
-    public SessionHolds holds() {
+    public @Nullable SessionHolds holds() {
         return holds;
     }
 
     @Override
-    public void output(SupervisedTool tool, Stream stream, String line) {
+    public void output(@Nullable SupervisedTool tool, Stream stream, String line) {
         if (tool == null) {
             log(Status.warning(sessionName + ": " + line));
             return;
@@ -193,7 +195,7 @@ public final class SessionParts implements ToolListener {
         return p;
     }
 
-    private SessionPartProcess.Control control(SupervisedTool tool) {
+    private SessionPartProcess.Control control(@Nullable SupervisedTool tool) {
         return new SessionPartProcess.Control() {
             @Override
             public void terminate() {
@@ -278,7 +280,7 @@ public final class SessionParts implements ToolListener {
     }
 
     /** The session could not start: every part shown so far ends, and the reason goes to the Error Log. */
-    public void failed(String message, Throwable cause) {
+    public void failed(String message, @Nullable Throwable cause) {
         log(Status.error(sessionName + ": " + message, cause));
         List<SessionPartProcess> all;
         synchronized (this) {

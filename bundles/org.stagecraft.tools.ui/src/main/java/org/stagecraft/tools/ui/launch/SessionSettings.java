@@ -17,6 +17,7 @@ import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.debug.core.ILaunchConfiguration;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.tools.process.RestartPolicy;
 import org.stagecraft.tools.process.ToolSpec;
 import org.stagecraft.tools.session.PlayerLocator;
@@ -31,7 +32,7 @@ import org.stagecraft.tools.ui.registry.ToolTypeExtensionRegistry;
  * tools turned into what to run by their types, and the resulting {@link SessionConfig}. Every
  * problem becomes a {@link CoreException} that names the attribute, file or tool.
  */
-record SessionSettings(SessionConfig config, IFile cfgFile, IFile program, IProject project, IContainer logFolder) {
+record SessionSettings(SessionConfig config, @Nullable IFile cfgFile, @Nullable IFile program, @Nullable IProject project, @Nullable IContainer logFolder) {
 
     static SessionSettings read(ILaunchConfiguration c) throws CoreException {
         String cfgText = c.getAttribute(LaunchAttributes.CFG, "").trim();

@@ -15,6 +15,8 @@ import org.eclipse.debug.core.ILaunch;
 import org.eclipse.debug.core.model.IDebugElement;
 import org.eclipse.debug.core.model.IDebugTarget;
 import org.eclipse.debug.core.model.IThread;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.hold.HoldReason;
 import org.stagecraft.spy.hold.RobotHold;
 
@@ -52,6 +54,7 @@ public final class SuspendHold implements IDebugEventSetListener, AutoCloseable 
         return this;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void handleDebugEvents(DebugEvent[] events) {
         List<ILaunch> mine = null;
@@ -107,8 +110,8 @@ public final class SuspendHold implements IDebugEventSetListener, AutoCloseable 
         suspended.computeIfAbsent(target, t -> new HashSet<>()).add(who);
     }
 
-    private synchronized void resumed(IDebugTarget target, Object who) {
-        Set<Object> s = suspended.get(target);
+    private synchronized void resumed(IDebugTarget target, @Nullable Object who) {
+        @Nullable Set<Object> s = suspended.get(target);
         if (s == null) {
             return;
         }

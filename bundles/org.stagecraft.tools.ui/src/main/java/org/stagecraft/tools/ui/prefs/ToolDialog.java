@@ -2,6 +2,8 @@ package org.stagecraft.tools.ui.prefs;
 
 import java.util.List;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.dialogs.TitleAreaDialog;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.layout.GridData;
@@ -20,28 +22,29 @@ import org.stagecraft.tools.ui.registry.ToolTypeExtensionRegistry;
 /** Edits one user tool; checks it with its type before it can be saved. */
 final class ToolDialog extends TitleAreaDialog {
     private final ToolDefinition initial;
-    private ToolDefinition result;
-    private List<ToolTypeExtensionRegistry.Contribution> types;
-    private Text name;
-    private Combo type;
-    private Text command;
-    private Text arguments;
-    private Text workingDir;
-    private Text environment;
-    private Text readiness;
-    private Text restart;
-    private Text readyWithin;
-    private Button enabled;
+    private @Nullable ToolDefinition result;
+    private @Nullable List<ToolTypeExtensionRegistry.Contribution> types;
+    private @Nullable Text name;
+    private @Nullable Combo type;
+    private @Nullable Text command;
+    private @Nullable Text arguments;
+    private @Nullable Text workingDir;
+    private @Nullable Text environment;
+    private @Nullable Text readiness;
+    private @Nullable Text restart;
+    private @Nullable Text readyWithin;
+    private @Nullable Button enabled;
 
-    ToolDialog(Shell shell, ToolDefinition initial) {
+    ToolDialog(Shell shell, @Nullable ToolDefinition initial) {
         super(shell);
         this.initial = initial != null ? initial : ToolDefinition.of("", "", "");
     }
 
-    ToolDefinition result() {
+    @Nullable ToolDefinition result() {
         return result;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     protected Control createDialogArea(Composite parent) {
         setTitle("External tool");

@@ -2,7 +2,10 @@ package org.stagecraft.tools.ui.prefs;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.preference.PreferencePage;
 import org.eclipse.jface.viewers.ArrayContentProvider;
 import org.eclipse.jface.viewers.ColumnLabelProvider;
@@ -25,17 +28,19 @@ import org.stagecraft.tools.types.ToolDefinition;
 
 /** Preferences &gt; Stagecraft Tools: the Player and Python programs and the user's tools. */
 public final class ToolsPreferencePage extends PreferencePage implements IWorkbenchPreferencePage {
-    private Text player;
-    private Text python;
-    private TableViewer table;
+    private @Nullable Text player;
+    private @Nullable Text python;
+    private @Nullable TableViewer table;
     private final List<ToolDefinition> tools = new ArrayList<>();
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void init(IWorkbench workbench) {
         setDescription("Programs a Robot Session starts. Tools run before Player, in this order; "
                 + "each is waited for until it is ready.");
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     protected Control createContents(Composite parent) {
         Composite c = new Composite(parent, SWT.NONE);
@@ -81,10 +86,11 @@ public final class ToolsPreferencePage extends PreferencePage implements IWorkbe
         }
         ToolDialog dialog = new ToolDialog(getShell(), current);
         if (dialog.open() == Window.OK) {
+            ToolDefinition result = Objects.requireNonNull(dialog.result()); // OK sets it
             if (index >= 0) {
-                tools.set(index, dialog.result());
+                tools.set(index, result);
             } else {
-                tools.add(dialog.result());
+                tools.add(result);
             }
             table.refresh();
         }
@@ -103,6 +109,7 @@ public final class ToolsPreferencePage extends PreferencePage implements IWorkbe
         col.getColumn().setText(title);
         col.getColumn().setWidth(width);
         col.setLabelProvider(new ColumnLabelProvider() {
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public String getText(Object element) {
                 return text.apply((ToolDefinition) element);

@@ -4,6 +4,8 @@ import java.util.Map;
 
 import org.eclipse.core.commands.AbstractHandler;
 import org.eclipse.core.commands.ExecutionEvent;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.ui.commands.IElementUpdater;
 import org.eclipse.ui.menus.UIElement;
 import org.stagecraft.tools.ui.CommandButtons;
@@ -23,13 +25,15 @@ public final class EmergencyStopHandler extends AbstractHandler implements IElem
         EmergencyStop.get().addListener(refresh);
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
-    public Object execute(ExecutionEvent event) {
+    public @Nullable Object execute(ExecutionEvent event) {
         EmergencyStop.get().toggle();
         refresh.run(); // a toggle on an unchanged set of sessions still flips the button
         return null;
     }
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void updateElement(UIElement element, @SuppressWarnings("rawtypes") Map parameters) {
         EmergencyStop stop = EmergencyStop.get();

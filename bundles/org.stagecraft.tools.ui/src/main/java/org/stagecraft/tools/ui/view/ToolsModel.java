@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.tools.process.ToolState;
 
 /**
@@ -15,7 +16,7 @@ import org.stagecraft.tools.process.ToolState;
  */
 public final class ToolsModel {
     /** One row: a part of a session. */
-    public record Row(String session, String part, ToolState state, long pid, int restarts, Integer lastExit,
+    public record Row(String session, String part, ToolState state, long pid, int restarts, @Nullable Integer lastExit,
             String detail) {
     }
 
@@ -48,7 +49,7 @@ public final class ToolsModel {
         }
     }
 
-    public Row find(String session, String part) {
+    public @Nullable Row find(String session, String part) {
         synchronized (rows) {
             return rows.get(session + "\u0000" + part);
         }

@@ -2,6 +2,8 @@ package org.stagecraft.tools.ui.view;
 
 import java.util.function.Function;
 
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.jdt.annotation.Nullable;
 import org.eclipse.jface.viewers.ArrayContentProvider;
 import org.eclipse.jface.viewers.ColumnLabelProvider;
 import org.eclipse.jface.viewers.TableViewer;
@@ -16,7 +18,7 @@ import org.stagecraft.tools.ui.launch.SessionHolds;
 /** Every part of the running Robot Sessions with its state, process id, restarts and last exit code. */
 public final class ToolsView extends ViewPart {
     public static final String ID = "org.stagecraft.tools.ui.toolsView";
-    private TableViewer table;
+    private @Nullable TableViewer table;
     private final Color held = new Color(226, 214, 248);
     private final Runnable refresh = () -> {
         Display d = table == null ? null : table.getControl().getDisplay();
@@ -25,6 +27,7 @@ public final class ToolsView extends ViewPart {
         }
     };
 
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
     public void createPartControl(Composite parent) {
         table = new TableViewer(parent, SWT.FULL_SELECTION | SWT.BORDER);
@@ -62,11 +65,13 @@ public final class ToolsView extends ViewPart {
         c.getColumn().setText(title);
         c.getColumn().setWidth(width);
         c.setLabelProvider(new ColumnLabelProvider() {
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public String getText(Object element) {
                 return text.apply((ToolsModel.Row) element);
             }
 
+            @NonNullByDefault({}) // the parameters as the unannotated library gives them
             @Override
             public Color getBackground(Object element) {
                 // a session whose robots are held stands out, in the hold colour of the other views
