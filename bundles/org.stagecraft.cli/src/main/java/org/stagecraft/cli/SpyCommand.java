@@ -43,7 +43,8 @@ import org.stagecraft.streams.StreamMessage;
  */
 final class SpyCommand {
     static final String USAGE = "usage: stagecraft spy --listen [HOST:]PORT --to HOST:PORT [--listen ... --to ...]"
-            + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS] [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]]";
+            + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS] [--observation-wait SECONDS]"
+            + " [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]]";
 
     /** The live view's converter: the export's channels (Foxglove's schemas, and Player's own messages decoded). */
     static final Function<FoxgloveSink, Consumer<StreamMessage>> FOXGLOVE_SCENE = LiveScene.converter();
@@ -52,7 +53,9 @@ final class SpyCommand {
      * @param foxglove      where to serve the live view, or null for none
      * @param foxgloveQueue how many messages may wait for each viewer before new ones are dropped
      */
-    record Options(List<Route> routes, @Nullable Path log, Duration upstreamGrace, @Nullable InetSocketAddress foxglove, int foxgloveQueue) {
+    /** @param observationWait how long forwarding may wait for a stuck observation (0: best effort, never) */
+    record Options(List<Route> routes, @Nullable Path log, Duration upstreamGrace, @Nullable InetSocketAddress foxglove, int foxgloveQueue,
+            Duration observationWait) {
     }
 
     private final Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter;
@@ -164,7 +167,8 @@ final class SpyCommand {
                 : new Live(foxglove, BusRelay.start(bus, foxglove, liveConverter, BusRelay.DEFAULT_CAPACITY));
         // with a live view, the recorder hook also tells it when a connection has ended
         ObservationPipeline pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()),
-                live != null ? new EndOfConnections(recorder, bus) : recorder, ObservationPipeline.DEFAULT_MAX_QUEUED_BYTES);
+                live != null ? new EndOfConnections(recorder, bus) : recorder, ObservationPipeline.DEFAULT_MAX_QUEUED_BYTES)
+                .observationWait(o.observationWait());
         pipeline.addListener(say);
         spy.observer(pipeline);
         try {
@@ -239,6 +243,7 @@ final class SpyCommand {
         String foxglove = null;
         int foxgloveQueue = FoxgloveServer.DEFAULT_MAX_QUEUED_FRAMES;
         Duration grace = NetworkSpy.DEFAULT_UPSTREAM_GRACE;
+        Duration observationWait = ObservationPipeline.DEFAULT_OBSERVATION_WAIT;
         List<String> listens = new ArrayList<>();
         List<String> tos = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
@@ -253,6 +258,7 @@ final class SpyCommand {
                 case "--bind" -> bind = v;
                 case "--log" -> log = Path.of(v);
                 case "--upstream-grace" -> grace = seconds(a, v);
+                case "--observation-wait" -> observationWait = seconds(a, v);
                 case "--foxglove" -> foxglove = v;
                 case "--foxglove-queue" -> foxgloveQueue = count(a, v);
                 default -> throw new IllegalArgumentException("unknown option " + a);
@@ -275,7 +281,7 @@ final class SpyCommand {
                 throw new IllegalArgumentException("--foxglove: " + e.getMessage(), e);
             }
         }
-        return new Options(routes, log, grace, live, foxgloveQueue);
+        return new Options(routes, log, grace, live, foxgloveQueue, observationWait);
     }
 
     private static int count(String option, String text) {
@@ -354,6 +360,14 @@ final class SpyCommand {
             StringBuilder b = new StringBuilder();
             if (pipeline.abandonedMessages() > 0) {
                 b.append(sep).append(pipeline.abandonedMessages()).append(" unfinished messages given up (memory bound)");
+            }
+            long waited = pipeline.waitedForObservation().toMillis();
+            if (waited > 0) { // complete observation slowed the wire: say so, it is a change of the wire's timing
+                b.append(sep).append(String.format(Locale.ROOT, "forwarding waited %.1f s for observation", waited / 1000.0));
+            }
+            if (pipeline.stalls() > 0) {
+                b.append(sep).append(pipeline.stalls()).append(" observation stalls (bytes left out after waiting "
+                        + "--observation-wait)");
             }
             long failed = pipeline.internalErrors() + spy.observerFailures();
             if (failed > 0) {

@@ -209,6 +209,17 @@ class SpyCommandTest {
     }
 
     @Test
+    void observationWaitIsAnOptionInSecondsAndZeroMeansBestEffort() {
+        assertEquals(Duration.ofSeconds(1), SpyCommand.parse(new String[] {"--listen", "1", "--to", "2"}).observationWait(),
+                "complete observation by default");
+        assertEquals(Duration.ZERO, SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--observation-wait", "0"})
+                .observationWait());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> SpyCommand.parse(new String[] {"--listen", "1", "--to", "2", "--observation-wait", "forever"}));
+        assertTrue(e.getMessage().contains("--observation-wait 'forever' is not a number of seconds"), e.getMessage());
+    }
+
+    @Test
     void aRefusalAfterTheGracePeriodIsSaidOnStderr() throws Exception {
         int deadPort;
         try (ServerSocket s = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {

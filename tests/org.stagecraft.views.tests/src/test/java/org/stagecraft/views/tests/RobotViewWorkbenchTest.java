@@ -116,7 +116,10 @@ class RobotViewWorkbenchTest {
         GlHarness.spinUntil(() -> server.isDone() && client.isDone(), 60_000, "the replay through the spy");
         assertTrue(client.get().matches(), "the robot program got what Player sent, through the spy");
         assertTrue(server.get().matches(), "Player got what the robot program sent, through the spy");
-        GlHarness.spinUntil(() -> pipeline.messages() > 3000, 30_000, "the spy to publish the session");
+        // the connection has ended and observation has published everything it queued (it publishes in rounds)
+        GlHarness.spinUntil(() -> spy.openConnections() == 0, 30_000, "the spy to see the connection end");
+        pipeline.close();
+        assertTrue(pipeline.messages() > 3000, "the spy published the session: " + pipeline.messages());
         assertEquals(0, pipeline.decodeProblems());
         InetAddressString listen = new InetAddressString(spy.boundAddresses().get(0));
         return listen.text;
@@ -139,9 +142,14 @@ class RobotViewWorkbenchTest {
      * (counted before the data was sent), then follows the robot and draws a frame.
      */
     private FramePixels drawnWithData(RobotView v, RobotId robot, long framesBefore) {
-        GlHarness.spinUntil(() -> v.scene().world().robot(robot).poseSeen() && !v.scene().feed("laser").snapshot().isEmpty(),
-                30_000, "the view to receive pose and laser data");
-        GlHarness.spinUntil(() -> v.frames() > framesBefore, 10_000, "the view to redraw by itself after the data");
+        // this robot's laser data: the feed also keeps the last scan of an earlier test's robot (its streams were
+        // released), which satisfied a plain "not empty" before this robot's scans had arrived
+        GlHarness.spinUntil(() -> v.scene().world().robot(robot).poseSeen() && v.scene().feed("laser").snapshot().stream()
+                .anyMatch(m -> RobotId.of(m.key()).equals(robot)), 30_000,
+                "the view to receive this robot's pose and laser data");
+        long withData = v.frames();
+        GlHarness.spinUntil(() -> v.frames() > Math.max(framesBefore, withData), 10_000,
+                "the view to redraw by itself after the data");
         v.scene().camera().follow(robot);
         return v.capture();
     }
