@@ -4,19 +4,14 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.net.InetAddress;
 import java.net.ServerSocket;
-import java.net.Socket;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.Executor;
-import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -27,9 +22,6 @@ import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
-import org.stagecraft.recording.trace.TraceCorpus;
-import org.stagecraft.recording.trace.TraceReader;
-import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.streams.StreamBus;
 
 /**
@@ -40,7 +32,6 @@ import org.stagecraft.streams.StreamBus;
  */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class CompleteObservationTest {
-    private static final Executor PEERS = Executors.newVirtualThreadPerTaskExecutor();
     private static final PlayerDecoder DECODER = new PlayerDecoder(CodecRegistry.standard());
     /** A small bound, so that the recorded session is many times what observation may hold. */
     private static final long BOUND = 256 << 10;
@@ -52,20 +43,6 @@ class CompleteObservationTest {
         for (AutoCloseable c : cleanup) {
             c.close();
         }
-    }
-
-    /** The two byte streams of connection 1 of a recording (index 0: program to Player). */
-    private static byte[][] streams(String trace) throws IOException {
-        ByteArrayOutputStream c2s = new ByteArrayOutputStream();
-        ByteArrayOutputStream s2c = new ByteArrayOutputStream();
-        try (TraceReader r = new TraceReader(TraceCorpus.file(trace))) {
-            for (TraceRecord rec = r.next(); rec != null; rec = r.next()) {
-                if (rec instanceof TraceRecord.Chunk c && c.stream().conn() == 1) {
-                    (c.stream().dir() == Direction.CLIENT_TO_SERVER ? c2s : s2c).writeBytes(c.data());
-                }
-            }
-        }
-        return new byte[][] {c2s.toByteArray(), s2c.toByteArray()};
     }
 
     /** A log slower than the wire: every entry costs it {@code costNanos} (a slow disk, a loaded machine). */
@@ -88,46 +65,6 @@ class CompleteObservationTest {
         }
     }
 
-    /** Player sending the recorded stream as fast as the socket takes it, and reading what the program sends. */
-    private ServerSocket player(byte[] s2c, CompletableFuture<byte[]> received) throws IOException {
-        ServerSocket up = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
-        cleanup.add(up);
-        Thread.ofVirtual().start(() -> {
-            try (Socket s = up.accept()) {
-                CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
-                    try {
-                        s.getOutputStream().write(s2c);
-                        s.shutdownOutput();
-                    } catch (IOException e) {
-                        throw new IllegalStateException(e);
-                    }
-                }, PEERS);
-                received.complete(s.getInputStream().readAllBytes());
-                w.join();
-            } catch (IOException e) {
-                received.completeExceptionally(e);
-            }
-        });
-        return up;
-    }
-
-    private static byte[] program(NetworkSpy spy, byte[] c2s) throws IOException {
-        try (Socket s = new Socket()) {
-            s.connect(spy.boundAddresses().get(0));
-            CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
-                try {
-                    s.getOutputStream().write(c2s);
-                    s.shutdownOutput();
-                } catch (IOException e) {
-                    throw new IllegalStateException(e);
-                }
-            }, PEERS);
-            byte[] got = s.getInputStream().readAllBytes();
-            w.join();
-            return got;
-        }
-    }
-
     private NetworkSpy spy(ServerSocket player, ObservationPipeline pipeline) throws IOException {
         NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
         cleanup.add(spy);
@@ -137,7 +74,7 @@ class CompleteObservationTest {
 
     @Test
     void aBurstFasterThanObservationIsForwardedExactlyAndObservedCompletely() throws Exception {
-        byte[][] rec = streams("rates.headless-push.trace.jsonl"); // a headless Stage pushing as fast as it can
+        byte[][] rec = RecordedSession.streams("rates.headless-push.trace.jsonl"); // a headless Stage pushing as fast as it can
         assertTrue(rec[1].length > 8 * BOUND, "the burst is many times the observation bound: " + rec[1].length);
         StreamBus bus = new StreamBus();
         cleanup.add(bus);
@@ -145,9 +82,9 @@ class CompleteObservationTest {
         ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, log, BOUND);
         cleanup.add(pipeline);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        NetworkSpy spy = spy(player(rec[1], playerGot), pipeline);
+        NetworkSpy spy = spy(RecordedSession.player(rec[1], playerGot, cleanup), pipeline);
 
-        byte[] programGot = program(spy, rec[0]);
+        byte[] programGot = RecordedSession.program(spy.boundAddresses().get(0), rec[0]);
         assertArrayEquals(rec[1], programGot, "the program received Player's bytes exactly");
         assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS), "Player received the program's bytes exactly");
         assertTrue(log.closedSeen.await(60, TimeUnit.SECONDS), "the connection's close was recorded");
@@ -162,16 +99,16 @@ class CompleteObservationTest {
 
     @Test
     void bestEffortObservationNeverWaitsAndCountsWhatItLeftOut() throws Exception {
-        byte[][] rec = streams("rates.headless-push.trace.jsonl");
+        byte[][] rec = RecordedSession.streams("rates.headless-push.trace.jsonl");
         StreamBus bus = new StreamBus();
         cleanup.add(bus);
         SlowLog log = new SlowLog(20_000);
         ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, log, BOUND).observationWait(Duration.ZERO);
         cleanup.add(pipeline);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        NetworkSpy spy = spy(player(rec[1], playerGot), pipeline);
+        NetworkSpy spy = spy(RecordedSession.player(rec[1], playerGot, cleanup), pipeline);
 
-        assertArrayEquals(rec[1], program(spy, rec[0]));
+        assertArrayEquals(rec[1], RecordedSession.program(spy.boundAddresses().get(0), rec[0]));
         assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS));
         assertTrue(log.closedSeen.await(60, TimeUnit.SECONDS));
         assertEquals(Duration.ZERO, pipeline.waitedForObservation(), "best effort: the wire never waited");
@@ -183,7 +120,7 @@ class CompleteObservationTest {
 
     @Test
     void aStuckObservationCostsTheWireOneWaitLimitThenItIsLeftOut() throws Exception {
-        byte[][] rec = streams("rates.headless-push.trace.jsonl");
+        byte[][] rec = RecordedSession.streams("rates.headless-push.trace.jsonl");
         StreamBus bus = new StreamBus();
         cleanup.add(bus);
         CountDownLatch release = new CountDownLatch(1);
@@ -202,9 +139,9 @@ class CompleteObservationTest {
         ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, hung, BOUND).observationWait(limit);
         cleanup.add(pipeline);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        NetworkSpy spy = spy(player(rec[1], playerGot), pipeline);
+        NetworkSpy spy = spy(RecordedSession.player(rec[1], playerGot, cleanup), pipeline);
 
-        assertArrayEquals(rec[1], program(spy, rec[0]), "forwarding completes although observation is stuck");
+        assertArrayEquals(rec[1], RecordedSession.program(spy.boundAddresses().get(0), rec[0]), "forwarding completes although observation is stuck");
         assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS));
         assertTrue(pipeline.droppedBytes() > 0, "what could not be observed is counted");
         assertTrue(pipeline.stalls() >= 1, "the stall was noticed");

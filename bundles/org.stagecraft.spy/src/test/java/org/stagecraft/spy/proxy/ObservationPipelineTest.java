@@ -6,17 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.net.InetAddress;
 import java.net.ServerSocket;
-import java.net.Socket;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.Executor;
-import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.AfterEach;
@@ -40,8 +36,6 @@ import org.stagecraft.streams.Subscription;
 /** Recorded Player traffic replayed through a live spy: decoded, published, recorded; and what happens under load. */
 @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class ObservationPipelineTest {
-    /** Peers block in socket reads: each gets a virtual thread (the common pool may have one worker). */
-    private static final Executor PEERS = Executors.newVirtualThreadPerTaskExecutor();
     private static final PlayerDecoder DECODER = new PlayerDecoder(CodecRegistry.standard());
     private final List<AutoCloseable> cleanup = new ArrayList<>();
 
@@ -85,25 +79,7 @@ class ObservationPipelineTest {
 
     /** A stand-in Player: sends the recorded server stream and reads whatever the client sends. */
     private ServerSocket fakePlayer(byte[] s2c, CompletableFuture<byte[]> received) throws IOException {
-        ServerSocket up = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
-        cleanup.add(up);
-        Thread.ofVirtual().start(() -> {
-            try (Socket s = up.accept()) {
-                CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
-                    try {
-                        s.getOutputStream().write(s2c);
-                        s.shutdownOutput();
-                    } catch (IOException e) {
-                        throw new IllegalStateException(e);
-                    }
-                }, PEERS);
-                received.complete(s.getInputStream().readAllBytes());
-                w.join();
-            } catch (IOException e) {
-                received.completeExceptionally(e);
-            }
-        });
-        return up;
+        return RecordedSession.player(s2c, received, cleanup);
     }
 
     private ObservationPipeline pipeline(StreamBus bus, SpyRecorder recorder, long maxQueuedBytes) {
@@ -122,20 +98,7 @@ class ObservationPipelineTest {
 
     /** A robot program replaying the recorded client stream; returns what it received. */
     private static byte[] robotProgram(NetworkSpy spy, byte[] c2s) throws IOException {
-        try (Socket s = new Socket()) {
-            s.connect(spy.boundAddresses().get(0));
-            CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
-                try {
-                    s.getOutputStream().write(c2s);
-                    s.shutdownOutput();
-                } catch (IOException e) {
-                    throw new IllegalStateException(e);
-                }
-            }, PEERS);
-            byte[] got = s.getInputStream().readAllBytes();
-            w.join();
-            return got;
-        }
+        return RecordedSession.program(spy.boundAddresses().get(0), c2s);
     }
 
     @Test

@@ -23,8 +23,6 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.Executor;
-import java.util.concurrent.Executors;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -40,9 +38,6 @@ import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.player.xdr.XdrWriter;
-import org.stagecraft.recording.trace.TraceCorpus;
-import org.stagecraft.recording.trace.TraceReader;
-import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.streams.StreamBus;
 
 /**
@@ -52,7 +47,6 @@ import org.stagecraft.streams.StreamBus;
  */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class ObservationUnderPressureTest {
-    private static final Executor PEERS = Executors.newVirtualThreadPerTaskExecutor();
     private final List<AutoCloseable> cleanup = new ArrayList<>();
 
     @AfterEach
@@ -65,39 +59,12 @@ class ObservationUnderPressureTest {
 
     /** The two byte streams (client to server, server to client) of a one-connection recording. */
     private static byte[][] recorded(String trace) throws IOException {
-        ByteArrayOutputStream c2s = new ByteArrayOutputStream();
-        ByteArrayOutputStream s2c = new ByteArrayOutputStream();
-        try (TraceReader r = new TraceReader(TraceCorpus.file(trace))) {
-            for (TraceRecord rec = r.next(); rec != null; rec = r.next()) {
-                if (rec instanceof TraceRecord.Chunk c && c.stream().conn() == 1) {
-                    (c.stream().dir() == Direction.CLIENT_TO_SERVER ? c2s : s2c).writeBytes(c.data());
-                }
-            }
-        }
-        return new byte[][] {c2s.toByteArray(), s2c.toByteArray()};
+        return RecordedSession.streams(trace);
     }
 
     /** A stand-in Player for one well-behaved session: sends the recorded server stream, keeps what it got. */
     private ServerSocket recordedPlayer(byte[] s2c, CompletableFuture<byte[]> received) throws IOException {
-        ServerSocket up = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
-        cleanup.add(up);
-        Thread.ofVirtual().start(() -> {
-            try (Socket s = up.accept()) {
-                CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
-                    try {
-                        s.getOutputStream().write(s2c);
-                        s.shutdownOutput();
-                    } catch (IOException e) {
-                        throw new IllegalStateException(e);
-                    }
-                }, PEERS);
-                received.complete(s.getInputStream().readAllBytes());
-                w.join();
-            } catch (IOException e) {
-                received.completeExceptionally(e);
-            }
-        });
-        return up;
+        return RecordedSession.player(s2c, received, cleanup);
     }
 
     /** A stand-in Player that accepts any number of connections and reads whatever they send. */
@@ -129,20 +96,7 @@ class ObservationUnderPressureTest {
 
     /** A robot program replaying the recorded client stream; returns what it received. */
     private static byte[] robotProgram(InetSocketAddress at, byte[] c2s) throws IOException {
-        try (Socket s = new Socket()) {
-            s.connect(at);
-            CompletableFuture<Void> w = CompletableFuture.runAsync(() -> {
-                try {
-                    s.getOutputStream().write(c2s);
-                    s.shutdownOutput();
-                } catch (IOException e) {
-                    throw new IllegalStateException(e);
-                }
-            }, PEERS);
-            byte[] got = s.getInputStream().readAllBytes();
-            w.join();
-            return got;
-        }
+        return RecordedSession.program(at, c2s);
     }
 
     private static void await(BooleanSupplier condition, String what) throws InterruptedException {
