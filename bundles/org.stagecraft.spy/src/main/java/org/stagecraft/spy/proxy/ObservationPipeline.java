@@ -379,6 +379,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         long start = System.nanoTime();
         long progress = observedProgress.get();
         long lastMove = start;
+        boolean gaveUp = false;
         waiting.incrementAndGet();
         roomLock.lock();
         try {
@@ -395,6 +396,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 } else if (now - lastMove >= limit) {
                     stalled = true;
                     stalls.increment();
+                    gaveUp = true;
                     break;
                 }
                 room.awaitNanos(Math.min(limit - (now - lastMove), TimeUnit.MILLISECONDS.toNanos(TICK_MILLIS)));
@@ -407,6 +409,12 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             roomLock.unlock();
             waiting.decrementAndGet();
             waitNanos.add(System.nanoTime() - start);
+            if (gaveUp) {
+                tell(new SpyNotice(SPY, SpyNotice.Kind.OBSERVATION_STALLED, String.format(Locale.ROOT,
+                        "observation made no progress for %.1f s (a hung disk? a stuck log?): forwarding goes on without"
+                                + " waiting for it, and what it cannot take is not observed until it moves again [%d stalls so far]",
+                        limit / 1e9, stalls.sum())));
+            }
         }
     }
 
@@ -684,7 +692,10 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             return;
         }
         String line = count > 1 ? text + " [" + count + " observation failures so far]" : text;
-        SpyNotice n = new SpyNotice(c, SpyNotice.Kind.OBSERVATION_FAILED, line);
+        tell(new SpyNotice(c, SpyNotice.Kind.OBSERVATION_FAILED, line));
+    }
+
+    private void tell(SpyNotice n) {
         for (SpyListener l : listeners) {
             try {
                 l.notice(n);

@@ -21,11 +21,17 @@ public record SpyNotice(ConnectionInfo connection, Kind kind, String text) {
          * Observing failed (a bug, a missing class, a log that broke): the wire goes on, but what the
          * spy shows and records is incomplete from here; the bytes concerned are counted as unobserved.
          */
-        OBSERVATION_FAILED;
+        OBSERVATION_FAILED,
+        /**
+         * Observation made no progress for the wait limit (a hung disk, a stuck log): forwarding stopped
+         * waiting for it, and what it cannot take is left out of observation (counted, logged as gaps)
+         * until it moves again.
+         */
+        OBSERVATION_STALLED;
 
         /** Whether something was lost (a robot program's connection, or observation), not just delayed. */
         public boolean isFailure() {
-            return this == UPSTREAM_REFUSED || this == OBSERVATION_FAILED;
+            return this == UPSTREAM_REFUSED || this == OBSERVATION_FAILED || this == OBSERVATION_STALLED;
         }
     }
 

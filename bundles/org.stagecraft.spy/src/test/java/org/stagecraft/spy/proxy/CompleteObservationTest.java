@@ -138,6 +138,8 @@ class CompleteObservationTest {
         Duration limit = Duration.ofMillis(300);
         ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, hung, BOUND).observationWait(limit);
         cleanup.add(pipeline);
+        List<SpyNotice> notices = new java.util.concurrent.CopyOnWriteArrayList<>();
+        pipeline.addListener(notices::add);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
         NetworkSpy spy = spy(RecordedSession.player(rec[1], playerGot, cleanup), pipeline);
 
@@ -145,6 +147,8 @@ class CompleteObservationTest {
         assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS));
         assertTrue(pipeline.droppedBytes() > 0, "what could not be observed is counted");
         assertTrue(pipeline.stalls() >= 1, "the stall was noticed");
+        assertTrue(notices.stream().anyMatch(n -> n.kind() == SpyNotice.Kind.OBSERVATION_STALLED
+                && n.text().contains("no progress for 0.3 s")), "and said at once: " + notices);
         // each direction's thread waits at most one limit before the stall is noticed; after it, no chunk waits
         // (a margin of one more limit for the scheduling of a loaded machine)
         assertTrue(pipeline.waitedForObservation().compareTo(limit.multipliedBy(2 * 2)) <= 0,
