@@ -17,6 +17,7 @@ import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
@@ -152,8 +153,23 @@ class SpyFoxgloveTest {
             messagesPerTopic.merge(topics.get(subscriptionChannel.get(sub)), 1, Integer::sum);
         }
 
+        final CountDownLatch closed = new CountDownLatch(1);
+
         @Override
         public void onClose(int code, String reason, boolean remote) {
+            closed.countDown();
+        }
+
+        /**
+         * Closes with the closing handshake, but waits for it a bounded time (closeBlocking waits for
+         * ever), so that a failure before it is reported instead of hidden behind a hanging clean-up.
+         */
+        void closeWithin(Duration d) throws InterruptedException {
+            close();
+            if (!closed.await(d.toMillis(), TimeUnit.MILLISECONDS)) {
+                closeConnection(org.java_websocket.framing.CloseFrame.ABNORMAL_CLOSE, "no close from the server within " + d);
+                assertTrue(closed.await(d.toMillis(), TimeUnit.MILLISECONDS), "the viewer's connection did not end");
+            }
         }
 
         @Override
@@ -232,7 +248,7 @@ class SpyFoxgloveTest {
                 return new Run(exact, totals, viewer);
             } finally {
                 viewer.resume.countDown();
-                viewer.closeBlocking();
+                viewer.closeWithin(Duration.ofSeconds(10));
             }
         }
     }
