@@ -361,14 +361,7 @@ final class SpyCommand {
             if (pipeline.abandonedMessages() > 0) {
                 b.append(sep).append(pipeline.abandonedMessages()).append(" unfinished messages given up (memory bound)");
             }
-            long waited = pipeline.waitedForObservation().toMillis();
-            if (waited > 0) { // complete observation slowed the wire: say so, it is a change of the wire's timing
-                b.append(sep).append(String.format(Locale.ROOT, "forwarding waited %.1f s for observation", waited / 1000.0));
-            }
-            if (pipeline.stalls() > 0) {
-                b.append(sep).append(pipeline.stalls()).append(" observation stalls (bytes left out after waiting "
-                        + "--observation-wait)");
-            }
+            b.append(pipeline.waitingSummary(sep));
             long failed = pipeline.internalErrors() + spy.observerFailures();
             if (failed > 0) {
                 b.append(sep).append(failed).append(" observation failures");

@@ -29,8 +29,9 @@ import org.stagecraft.spy.log.SpyLogWriter;
  * second) and {@link #close()}; holding a few entries back changes nothing in the file, where they
  * would wait in the open chunk anyway. Memory: batches waiting for the log thread hold at most
  * {@value #MAX_QUEUED_BYTES} bytes of entries (one larger message is always taken); past that the
- * observation thread waits, so its own bounded queue fills and the forwarding threads count what
- * they cannot queue as unobserved (the wire is never slowed).
+ * observation thread waits, so its own queue fills and the forwarding threads wait for room while it
+ * makes progress, or, once it has made none for the pipeline's wait limit (a hung disk), count what
+ * they cannot queue as unobserved ({@link ObservationPipeline#observationWait}).
  *
  * <p>Failures: the first failure of the log (a full disk: an IOException; or a bug) stops the log
  * thread's writing; the writer is closed, which keeps every complete chunk; the next call (or

@@ -630,6 +630,22 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         return stalls.sum();
     }
 
+    /**
+     * What complete observation did to the wire, for a summary line, each part after {@code sep}:
+     * how long forwarding waited for observation and how often it stalled; empty when neither happened.
+     */
+    public String waitingSummary(String sep) {
+        StringBuilder b = new StringBuilder();
+        long waited = waitedForObservation().toMillis();
+        if (waited > 0) { // a change of the wire's timing: said wherever the spy's totals are
+            b.append(sep).append(String.format(Locale.ROOT, "forwarding waited %.1f s for observation", waited / 1000.0));
+        }
+        if (stalls() > 0) {
+            b.append(sep).append(stalls()).append(" observation stalls (bytes left out after waiting the limit)");
+        }
+        return b.toString();
+    }
+
     /** Unfinished messages whose observation was given up to keep memory bounded. */
     public long abandonedMessages() {
         return abandonedMessages.sum();

@@ -6,7 +6,8 @@ import org.stagecraft.spy.hold.HoldState;
 
 /**
  * Sees what the spy forwards, after it has been forwarded. Called on the forwarding threads, so
- * implementations must return at once: they may copy and queue, never wait.
+ * implementations must not block: they may copy and queue, and wait only a bounded time for room
+ * (the observation pipeline's complete observation: never for a part that makes no progress).
  */
 public interface WireObserver {
     void opened(ConnectionInfo connection, long timeNanos);

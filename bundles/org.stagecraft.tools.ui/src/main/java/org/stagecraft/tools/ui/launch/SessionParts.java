@@ -259,9 +259,7 @@ public final class SessionParts implements ToolListener {
                         + " messages, " + (s.spy().bytesForwarded(Direction.CLIENT_TO_SERVER)
                                 + s.spy().bytesForwarded(Direction.SERVER_TO_CLIENT)) + " bytes relayed, "
                         + s.pipeline().droppedBytes() + " bytes unobserved"
-                        + (s.pipeline().waitedForObservation().toMillis() > 0 ? String.format(java.util.Locale.ROOT,
-                                "; forwarding waited %.1f s for observation", s.pipeline().waitedForObservation().toMillis() / 1000.0) : "")
-                        + (s.pipeline().stalls() > 0 ? "; " + s.pipeline().stalls() + " observation stalls" : "")
+                        + s.pipeline().waitingSummary("; ")
                         + (s.pipeline().internalErrors() > 0 ? "; " + s.pipeline().internalErrors() + " observation failures" : "")
                         + (s.pipeline().recorderError() != null ? "; log error: " + s.pipeline().recorderError() : ""));
                 ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.STOPPED, -1, 0, null,
