@@ -43,6 +43,8 @@ public final class RobotScene implements AutoCloseable {
     private final FloatList minor = new FloatList(), major = new FloatList();
     private @Nullable GLUT glut;
     private long frames;
+    /** Per layer, the feed version the last frame drew (read before its snapshot, so never ahead of it). */
+    private final Map<String, Long> drawnVersions = new ConcurrentHashMap<>();
     /** Text drawn over everything (e.g. "HELD (suspended in the debugger)"), or null. */
     private volatile @Nullable String overlay;
 
@@ -172,6 +174,15 @@ public final class RobotScene implements AutoCloseable {
         return frames;
     }
 
+    /**
+     * The version of the layer's feed that the last frame drew (everything up to it, maybe more), or -1
+     * if no frame has drawn the layer: equal to {@code feed(layerId).version()} once the newest data is
+     * on screen.
+     */
+    public long drawnVersion(String layerId) {
+        return drawnVersions.getOrDefault(layerId, -1L);
+    }
+
     /** Draws one frame into the current GL context's {@code width} x {@code height} viewport. */
     public void render(GL2 gl, int width, int height) {
         List<StreamRenderer> dead;
@@ -204,7 +215,11 @@ public final class RobotScene implements AutoCloseable {
             if (!l.visible() || r == null || f == null) {
                 continue;
             }
-            r.frame(gl, new RenderInput(l, f.snapshot(), f.drainUnseen(), f.version(), world, camera));
+            // the version first: a message arriving during the snapshot makes it look newer than the version,
+            // which schedules another frame, never older (a renderer caching by version would keep stale data)
+            long version = f.version();
+            r.frame(gl, new RenderInput(l, f.snapshot(), f.drainUnseen(), version, world, camera));
+            drawnVersions.put(l.id(), version);
         }
         drawOverlay(gl, height);
         frames++;

@@ -138,8 +138,11 @@ class RobotViewWorkbenchTest {
     }
 
     /**
-     * Waits until the view has the robot and its laser and has redrawn by itself since {@code framesBefore}
-     * (counted before the data was sent), then follows the robot and draws a frame.
+     * Waits until the view has the robot and its laser, and has redrawn by itself (frames counted before
+     * the data was sent) up to the newest laser data it received; then follows the robot and draws a frame.
+     * The data may all have arrived and been drawn before this is called (observation publishes in rounds
+     * while the replay runs), so "a frame after the data" is judged by the version drawn, not by a frame
+     * counted here.
      */
     private FramePixels drawnWithData(RobotView v, RobotId robot, long framesBefore) {
         // this robot's laser data: the feed also keeps the last scan of an earlier test's robot (its streams were
@@ -147,9 +150,9 @@ class RobotViewWorkbenchTest {
         GlHarness.spinUntil(() -> v.scene().world().robot(robot).poseSeen() && v.scene().feed("laser").snapshot().stream()
                 .anyMatch(m -> RobotId.of(m.key()).equals(robot)), 30_000,
                 "the view to receive this robot's pose and laser data");
-        long withData = v.frames();
-        GlHarness.spinUntil(() -> v.frames() > Math.max(framesBefore, withData), 10_000,
-                "the view to redraw by itself after the data");
+        GlHarness.spinUntil(() -> v.frames() > framesBefore
+                && v.scene().drawnVersion("laser") == v.scene().feed("laser").version(), 10_000,
+                "the view to redraw by itself with the newest laser data");
         v.scene().camera().follow(robot);
         return v.capture();
     }
