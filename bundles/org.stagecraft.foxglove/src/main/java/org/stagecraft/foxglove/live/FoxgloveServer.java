@@ -27,6 +27,7 @@ import org.eclipse.jdt.annotation.Nullable;
 import org.java_websocket.WebSocket;
 import org.java_websocket.WebSocketImpl;
 import org.java_websocket.drafts.Draft;
+import org.java_websocket.framing.CloseFrame;
 import org.java_websocket.drafts.Draft_6455;
 import org.java_websocket.handshake.ClientHandshake;
 import org.java_websocket.protocols.IProtocol;
@@ -243,14 +244,22 @@ public final class FoxgloveServer implements FoxgloveSink, AutoCloseable {
 
     /**
      * Closes every viewer's connection and the listening socket. Each viewer's counts are told at once
-     * ({@link #onNotice}): a viewer that does not read may never finish the closing handshake.
+     * ({@link #onNotice}): a viewer that does not read may never finish the closing handshake, so once
+     * the server has stopped (at most a second), a connection still open is cut.
      */
     @Override
     public void close() {
+        List<WebSocket> viewers = List.copyOf(endpoint.getConnections());
         for (WebSocket conn : List.copyOf(sessions.keySet())) {
             closed(conn, "Stagecraft stopped serving");
         }
         stopQuietly();
+        // the server's thread has ended (or given up): nothing else would ever close these sockets
+        for (WebSocket conn : viewers) {
+            if (!conn.isClosed()) {
+                conn.closeConnection(CloseFrame.GOING_AWAY, "Stagecraft stopped serving");
+            }
+        }
     }
 
     private void stopQuietly() {

@@ -220,6 +220,94 @@ class FoxgloveServerTest {
         }
     }
 
+    /**
+     * A viewer that stopped reading (frozen, or its host gone without a FIN) with the server's buffers
+     * to it full cannot be sent the close frame, so it never answers the closing handshake: its
+     * connection is still cut when the server closes. Before, its socket stayed open after the server
+     * had stopped, for as long as the viewer lived. The viewer is a plain socket that does the opening
+     * handshake and the subscription by hand, then stops reading; once the server has closed it reads
+     * again and must reach the end of the stream.
+     */
+    @Test
+    void closingCutsAStuckViewerThatCannotBeToldItIsClosed() throws Exception {
+        FoxgloveServer s = server(8);
+        s.advertise(SCAN);
+        try (java.net.Socket raw = new java.net.Socket(s.address().getAddress(), s.address().getPort())) {
+            raw.setSoTimeout(10_000);
+            java.io.OutputStream out = raw.getOutputStream();
+            out.write(("GET / HTTP/1.1\r\nHost: " + s.address().getHostString() + ":" + s.address().getPort()
+                    + "\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Key: c3RhZ2VjcmFmdCB0ZXN0ICE=\r\n"
+                    + "Sec-WebSocket-Version: 13\r\nSec-WebSocket-Protocol: foxglove.websocket.v1\r\n\r\n")
+                    .getBytes(StandardCharsets.US_ASCII));
+            java.io.DataInputStream in = new java.io.DataInputStream(raw.getInputStream());
+            StringBuilder head = new StringBuilder();
+            while (!head.toString().endsWith("\r\n\r\n")) {
+                head.append((char) in.readUnsignedByte());
+            }
+            assertTrue(head.toString().startsWith("HTTP/1.1 101"), head.toString());
+            assertEquals(0x1, readFrame(in).opcode(), "serverInfo");
+            RawFrame advertise = readFrame(in);
+            int channel = com.google.gson.JsonParser.parseString(new String(advertise.payload(), StandardCharsets.UTF_8))
+                    .getAsJsonObject().getAsJsonArray("channels").get(0).getAsJsonObject().get("id").getAsInt();
+            writeMaskedText(out, "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":" + channel + "}]}");
+            int n = 0;
+            do { // probes until the subscription is in effect: a message frame arrives
+                assertTrue(n < 10_000, "subscription not in effect after 10 000 probes");
+                s.publish(SCAN, T0, T0, json("{\"probe\":" + n++ + "}"));
+            } while (readFrame(in).opcode() != 0x2);
+            // now it stops reading: publish until its queue behind the full socket buffers overflows
+            byte[] big = new byte[256 * 1024];
+            while (s.counters().framesDropped() == 0) {
+                assertTrue(n < 10_000, "nothing dropped after 10 000 messages to a viewer that does not read");
+                s.publish(SCAN, T0 + n, T0 + n, big);
+                n++;
+            }
+
+            long start = System.nanoTime();
+            s.close();
+            long closeMillis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
+            assertTrue(closeMillis < 5_000, "close took " + closeMillis + " ms");
+            assertEquals(0, s.counters().viewers());
+            long frames = 0;
+            while (readFrame(in).opcode() != -1) { // a SocketTimeoutException here: the connection was left open
+                frames++;
+            }
+            System.out.printf("stuck viewer cut by close after %d ms; it then read %d frames and the end%n", closeMillis,
+                    frames);
+        }
+    }
+
+    /** Writes one masked text frame, as a client must (the key is fixed: nothing here needs it random). */
+    private static void writeMaskedText(java.io.OutputStream out, String text) throws IOException {
+        byte[] payload = text.getBytes(StandardCharsets.UTF_8);
+        assertTrue(payload.length < 126, "short frames only");
+        byte[] key = {0x12, 0x34, 0x56, 0x78};
+        byte[] frame = new byte[2 + 4 + payload.length];
+        frame[0] = (byte) 0x81;
+        frame[1] = (byte) (0x80 | payload.length);
+        System.arraycopy(key, 0, frame, 2, 4);
+        for (int i = 0; i < payload.length; i++) {
+            frame[6 + i] = (byte) (payload[i] ^ key[i % 4]);
+        }
+        out.write(frame);
+        out.flush();
+    }
+
+    /** One frame from the server, read by hand; opcode -1 is the end of the stream. */
+    private record RawFrame(int opcode, byte[] payload) {
+    }
+
+    /** Reads one (unmasked, unfragmented) frame from the server. */
+    private static RawFrame readFrame(java.io.DataInputStream in) throws IOException {
+        int b0 = in.read();
+        if (b0 == -1) {
+            return new RawFrame(-1, new byte[0]);
+        }
+        int len = in.readUnsignedByte() & 0x7F;
+        long n = len == 126 ? in.readUnsignedShort() : len == 127 ? in.readLong() : len;
+        return new RawFrame(b0 & 0x0F, in.readNBytes(Math.toIntExact(n)));
+    }
+
     @Test
     void aPortInUseIsAClearError() throws Exception {
         try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
