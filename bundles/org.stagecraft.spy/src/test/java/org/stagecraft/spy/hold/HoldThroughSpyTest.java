@@ -23,7 +23,7 @@ import java.util.Map;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
 
-import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.RepeatedTest;
 import org.junit.jupiter.api.RepetitionInfo;
 import org.junit.jupiter.api.Test;
@@ -31,6 +31,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.spy.Cleanup;
 import org.stagecraft.spy.hold.ProgramTraffic.Msg;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.SpyLogReader;
@@ -112,15 +113,8 @@ class HoldThroughSpyTest {
         }
     }
 
-    private final List<AutoCloseable> cleanup = new ArrayList<>();
-
-    @AfterEach
-    void closeAll() throws Exception {
-        Collections.reverse(cleanup);
-        for (AutoCloseable c : cleanup) {
-            c.close();
-        }
-    }
+    @AutoClose
+    private final Cleanup cleanup = new Cleanup();
 
     private record Setup(FakePlayer player, NetworkSpy spy, ObservationPipeline pipeline, StreamBus bus, Path log,
             List<StreamMessage> holdStream, java.util.concurrent.Semaphore holdStreamIn) {

@@ -11,7 +11,6 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
-import java.nio.channels.SeekableByteChannel;
 import java.nio.channels.WritableByteChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -31,6 +30,7 @@ import org.stagecraft.mcap.Mcap;
 import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.spy.ForwardingFileChannel;
 
 class SpyLogTest {
     /** Footer record (opcode, length, 20 bytes) and the closing magic. */
@@ -507,65 +507,27 @@ class SpyLogTest {
         }
     }
 
-    /** The same, seekable: the writer can cut the file back. */
-    private static final class FillingSeekable implements SeekableByteChannel {
-        private final FileChannel file;
+    /** The same, as the file channel the writer gets for a path: the writer can cut the file back. */
+    private static final class FillingFile extends ForwardingFileChannel {
         private final FillingChannel filling;
 
-        FillingSeekable(FileChannel file, long budget) {
-            this.file = file;
+        FillingFile(FileChannel file, long budget) {
+            super(file);
             this.filling = new FillingChannel(file, budget);
-        }
-
-        @Override
-        public int read(ByteBuffer dst) throws IOException {
-            return file.read(dst);
         }
 
         @Override
         public int write(ByteBuffer src) throws IOException {
             return filling.write(src);
         }
-
-        @Override
-        public long position() throws IOException {
-            return file.position();
-        }
-
-        @Override
-        public SeekableByteChannel position(long p) throws IOException {
-            file.position(p);
-            return this;
-        }
-
-        @Override
-        public long size() throws IOException {
-            return file.size();
-        }
-
-        @Override
-        public SeekableByteChannel truncate(long size) throws IOException {
-            file.truncate(size);
-            return this;
-        }
-
-        @Override
-        public boolean isOpen() {
-            return file.isOpen();
-        }
-
-        @Override
-        public void close() throws IOException {
-            file.close();
-        }
     }
 
     @Test
     void aFailedWriteToAFileIsCutBackToTheLastCompleteChunk() throws IOException {
         Path log = tmp.resolve("cut-back.mcap");
-        // a seekable channel that fails after 3000 bytes: the writer truncates the partial chunk away
+        // a file that fails after 3000 bytes: the writer truncates the partial chunk away
         FileChannel real = FileChannel.open(log, StandardOpenOption.CREATE, StandardOpenOption.WRITE);
-        SeekableByteChannel failing = new FillingSeekable(real, 3000);
+        FileChannel failing = new FillingFile(real, 3000);
         SpyLogWriter w = SpyLogWriter.create(failing, Map.of(), 1 << 20);
         Random random = new Random(1);
         byte[][] noise = new byte[3][1000];

@@ -7,21 +7,19 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.net.ServerSocket;
 import java.time.Duration;
-import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
-import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.spy.Cleanup;
 import org.stagecraft.streams.StreamBus;
 
 /**
@@ -35,15 +33,8 @@ class CompleteObservationTest {
     private static final PlayerDecoder DECODER = new PlayerDecoder(CodecRegistry.standard());
     /** A small bound, so that the recorded session is many times what observation may hold. */
     private static final long BOUND = 256 << 10;
-    private final List<AutoCloseable> cleanup = new ArrayList<>();
-
-    @AfterEach
-    void close() throws Exception {
-        Collections.reverse(cleanup);
-        for (AutoCloseable c : cleanup) {
-            c.close();
-        }
-    }
+    @AutoClose
+    private final Cleanup cleanup = new Cleanup();
 
     /** A log slower than the wire: every entry costs it {@code costNanos} (a slow disk, a loaded machine). */
     private static final class SlowLog extends ObservationPipelineTest.RecordingRecorder {
@@ -65,28 +56,43 @@ class CompleteObservationTest {
         }
     }
 
-    private NetworkSpy spy(ServerSocket player, ObservationPipeline pipeline) throws IOException {
+    /** A pipeline with the small bound, on a bus of its own, logging to {@code log}. */
+    private ObservationPipeline pipeline(SpyRecorder log) {
+        StreamBus bus = new StreamBus();
+        cleanup.add(bus);
+        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, log, BOUND);
+        cleanup.add(pipeline);
+        return pipeline;
+    }
+
+    /** The recorded burst, and a spy observed by the pipeline in front of a Player that replays it. */
+    private record Burst(byte[][] rec, NetworkSpy spy, CompletableFuture<byte[]> playerGot) {
+        /** Runs the robot program's side through the spy; what it received. */
+        byte[] program() throws IOException {
+            return RecordedSession.program(spy.boundAddresses().get(0), rec[0]);
+        }
+    }
+
+    private Burst burst(ObservationPipeline pipeline) throws IOException {
+        byte[][] rec = RecordedSession.streams("rates.headless-push.trace.jsonl"); // a headless Stage pushing as fast as it can
+        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
+        ServerSocket player = RecordedSession.player(rec[1], playerGot, cleanup);
         NetworkSpy spy = new NetworkSpy(List.of(Route.loopback(0, "127.0.0.1", player.getLocalPort())), pipeline);
         cleanup.add(spy);
         spy.start();
-        return spy;
+        return new Burst(rec, spy, playerGot);
     }
 
     @Test
     void aBurstFasterThanObservationIsForwardedExactlyAndObservedCompletely() throws Exception {
-        byte[][] rec = RecordedSession.streams("rates.headless-push.trace.jsonl"); // a headless Stage pushing as fast as it can
-        assertTrue(rec[1].length > 8 * BOUND, "the burst is many times the observation bound: " + rec[1].length);
-        StreamBus bus = new StreamBus();
-        cleanup.add(bus);
         SlowLog log = new SlowLog(20_000);
-        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, log, BOUND);
-        cleanup.add(pipeline);
-        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        NetworkSpy spy = spy(RecordedSession.player(rec[1], playerGot, cleanup), pipeline);
+        ObservationPipeline pipeline = pipeline(log);
+        Burst b = burst(pipeline);
+        byte[][] rec = b.rec();
+        assertTrue(rec[1].length > 8 * BOUND, "the burst is many times the observation bound: " + rec[1].length);
 
-        byte[] programGot = RecordedSession.program(spy.boundAddresses().get(0), rec[0]);
-        assertArrayEquals(rec[1], programGot, "the program received Player's bytes exactly");
-        assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS), "Player received the program's bytes exactly");
+        assertArrayEquals(rec[1], b.program(), "the program received Player's bytes exactly");
+        assertArrayEquals(rec[0], b.playerGot().get(60, TimeUnit.SECONDS), "Player received the program's bytes exactly");
         assertTrue(log.closedSeen.await(60, TimeUnit.SECONDS), "the connection's close was recorded");
 
         assertEquals(0, pipeline.droppedBytes(), "nothing forwarded went unobserved");
@@ -99,17 +105,13 @@ class CompleteObservationTest {
 
     @Test
     void bestEffortObservationNeverWaitsAndCountsWhatItLeftOut() throws Exception {
-        byte[][] rec = RecordedSession.streams("rates.headless-push.trace.jsonl");
-        StreamBus bus = new StreamBus();
-        cleanup.add(bus);
         SlowLog log = new SlowLog(20_000);
-        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, log, BOUND).observationWait(Duration.ZERO);
-        cleanup.add(pipeline);
-        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        NetworkSpy spy = spy(RecordedSession.player(rec[1], playerGot, cleanup), pipeline);
+        ObservationPipeline pipeline = pipeline(log).observationWait(Duration.ZERO);
+        Burst b = burst(pipeline);
+        byte[][] rec = b.rec();
 
-        assertArrayEquals(rec[1], RecordedSession.program(spy.boundAddresses().get(0), rec[0]));
-        assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS));
+        assertArrayEquals(rec[1], b.program());
+        assertArrayEquals(rec[0], b.playerGot().get(60, TimeUnit.SECONDS));
         assertTrue(log.closedSeen.await(60, TimeUnit.SECONDS));
         assertEquals(Duration.ZERO, pipeline.waitedForObservation(), "best effort: the wire never waited");
         assertTrue(pipeline.droppedBytes() > 0, "a log this slow could not take the burst: " + pipeline.droppedBytes());
@@ -120,31 +122,16 @@ class CompleteObservationTest {
 
     @Test
     void aStuckObservationCostsTheWireOneWaitLimitThenItIsLeftOut() throws Exception {
-        byte[][] rec = RecordedSession.streams("rates.headless-push.trace.jsonl");
-        StreamBus bus = new StreamBus();
-        cleanup.add(bus);
-        CountDownLatch release = new CountDownLatch(1);
-        ObservationPipelineTest.RecordingRecorder hung = new ObservationPipelineTest.RecordingRecorder() {
-            @Override
-            public void wire(ConnectionInfo c, Direction dir, WireEvent e, long t) throws IOException {
-                try {
-                    release.await(); // a log on a disk that hangs
-                } catch (InterruptedException ex) {
-                    Thread.currentThread().interrupt();
-                }
-                super.wire(c, dir, e, t);
-            }
-        };
+        ObservationPipelineTest.HungLog hung = new ObservationPipelineTest.HungLog();
         Duration limit = Duration.ofMillis(300);
-        ObservationPipeline pipeline = new ObservationPipeline(bus, DECODER, hung, BOUND).observationWait(limit);
-        cleanup.add(pipeline);
+        ObservationPipeline pipeline = pipeline(hung).observationWait(limit);
         List<SpyNotice> notices = new java.util.concurrent.CopyOnWriteArrayList<>();
         pipeline.addListener(notices::add);
-        CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
-        NetworkSpy spy = spy(RecordedSession.player(rec[1], playerGot, cleanup), pipeline);
+        Burst b = burst(pipeline);
+        byte[][] rec = b.rec();
 
-        assertArrayEquals(rec[1], RecordedSession.program(spy.boundAddresses().get(0), rec[0]), "forwarding completes although observation is stuck");
-        assertArrayEquals(rec[0], playerGot.get(60, TimeUnit.SECONDS));
+        assertArrayEquals(rec[1], b.program(), "forwarding completes although observation is stuck");
+        assertArrayEquals(rec[0], b.playerGot().get(60, TimeUnit.SECONDS));
         assertTrue(pipeline.droppedBytes() > 0, "what could not be observed is counted");
         assertTrue(pipeline.stalls() >= 1, "the stall was noticed");
         assertTrue(notices.stream().anyMatch(n -> n.kind() == SpyNotice.Kind.OBSERVATION_STALLED
@@ -153,6 +140,6 @@ class CompleteObservationTest {
         // (a margin of one more limit for the scheduling of a loaded machine)
         assertTrue(pipeline.waitedForObservation().compareTo(limit.multipliedBy(2 * 2)) <= 0,
                 "the wire waited at most one limit per direction: " + pipeline.waitedForObservation());
-        release.countDown();
+        hung.release.countDown();
     }
 }

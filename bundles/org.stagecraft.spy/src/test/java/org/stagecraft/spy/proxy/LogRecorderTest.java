@@ -25,6 +25,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.spy.ForwardingFileChannel;
 import org.stagecraft.spy.log.SpyLogReader;
 import org.stagecraft.spy.log.SpyLogWriter;
 
@@ -80,15 +81,14 @@ class LogRecorderTest {
     }
 
     /** A file whose force to the disk hangs until released (a busy disk's fsync), and says who forced it. */
-    private static final class SlowSyncFile extends FileChannel {
-        final FileChannel file;
+    private static final class SlowSyncFile extends ForwardingFileChannel {
         final CountDownLatch forcing = new CountDownLatch(1);
         final CountDownLatch release = new CountDownLatch(1);
         final Set<String> forcers = ConcurrentHashMap.newKeySet();
 
         SlowSyncFile(Path p) throws IOException {
-            file = FileChannel.open(p, StandardOpenOption.CREATE, StandardOpenOption.WRITE, StandardOpenOption.READ,
-                    StandardOpenOption.TRUNCATE_EXISTING);
+            super(FileChannel.open(p, StandardOpenOption.CREATE, StandardOpenOption.WRITE, StandardOpenOption.READ,
+                    StandardOpenOption.TRUNCATE_EXISTING));
         }
 
         @Override
@@ -101,88 +101,6 @@ class LogRecorderTest {
                 Thread.currentThread().interrupt();
             }
             file.force(metaData);
-        }
-
-        @Override
-        public int read(ByteBuffer dst) throws IOException {
-            return file.read(dst);
-        }
-
-        @Override
-        public long read(ByteBuffer[] dsts, int offset, int length) throws IOException {
-            return file.read(dsts, offset, length);
-        }
-
-        @Override
-        public int write(ByteBuffer src) throws IOException {
-            return file.write(src);
-        }
-
-        @Override
-        public long write(ByteBuffer[] srcs, int offset, int length) throws IOException {
-            return file.write(srcs, offset, length);
-        }
-
-        @Override
-        public long position() throws IOException {
-            return file.position();
-        }
-
-        @Override
-        public FileChannel position(long newPosition) throws IOException {
-            file.position(newPosition);
-            return this;
-        }
-
-        @Override
-        public long size() throws IOException {
-            return file.size();
-        }
-
-        @Override
-        public FileChannel truncate(long size) throws IOException {
-            file.truncate(size);
-            return this;
-        }
-
-        @Override
-        public long transferTo(long position, long count, WritableByteChannel target) throws IOException {
-            return file.transferTo(position, count, target);
-        }
-
-        @Override
-        public long transferFrom(java.nio.channels.ReadableByteChannel src, long position, long count) throws IOException {
-            return file.transferFrom(src, position, count);
-        }
-
-        @Override
-        public int read(ByteBuffer dst, long position) throws IOException {
-            return file.read(dst, position);
-        }
-
-        @Override
-        public int write(ByteBuffer src, long position) throws IOException {
-            return file.write(src, position);
-        }
-
-        @Override
-        public java.nio.MappedByteBuffer map(MapMode mode, long position, long size) throws IOException {
-            return file.map(mode, position, size);
-        }
-
-        @Override
-        public java.nio.channels.FileLock lock(long position, long size, boolean shared) throws IOException {
-            return file.lock(position, size, shared);
-        }
-
-        @Override
-        public java.nio.channels.FileLock tryLock(long position, long size, boolean shared) throws IOException {
-            return file.tryLock(position, size, shared);
-        }
-
-        @Override
-        protected void implCloseChannel() throws IOException {
-            file.close();
         }
     }
 

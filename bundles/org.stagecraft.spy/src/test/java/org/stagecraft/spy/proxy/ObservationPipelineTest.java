@@ -15,7 +15,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
-import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.stagecraft.player.codec.CodecRegistry;
@@ -26,10 +26,11 @@ import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceReader;
 import org.stagecraft.recording.trace.TraceRecord;
+import org.stagecraft.spy.Cleanup;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
-import org.stagecraft.streams.StreamMessage;
 import org.stagecraft.streams.StreamConsumer;
+import org.stagecraft.streams.StreamMessage;
 import org.stagecraft.streams.StreamPattern;
 import org.stagecraft.streams.Subscription;
 
@@ -37,15 +38,8 @@ import org.stagecraft.streams.Subscription;
 @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class ObservationPipelineTest {
     private static final PlayerDecoder DECODER = new PlayerDecoder(CodecRegistry.standard());
-    private final List<AutoCloseable> cleanup = new ArrayList<>();
-
-    @AfterEach
-    void close() throws Exception {
-        Collections.reverse(cleanup);
-        for (AutoCloseable c : cleanup) {
-            c.close();
-        }
-    }
+    @AutoClose
+    private final Cleanup cleanup = new Cleanup();
 
     private static Path trace(String name) {
         return TraceCorpus.file(name);
@@ -194,18 +188,7 @@ class ObservationPipelineTest {
                         gapReported.countDown();
                     }
                 });
-        CountDownLatch release = new CountDownLatch(1);
-        RecordingRecorder stuck = new RecordingRecorder() {
-            @Override
-            public void wire(ConnectionInfo c, Direction dir, WireEvent e, long t) throws IOException {
-                try {
-                    release.await(); // a log on a disk that hangs
-                } catch (InterruptedException ex) {
-                    Thread.currentThread().interrupt();
-                }
-                super.wire(c, dir, e, t);
-            }
-        };
+        HungLog stuck = new HungLog();
         ObservationPipeline pipeline = pipeline(bus, stuck, 256 * 1024);
         CompletableFuture<byte[]> playerGot = new CompletableFuture<>();
         NetworkSpy spy = spyInFrontOf(fakePlayer(rec[1], playerGot), pipeline);
@@ -214,7 +197,7 @@ class ObservationPipelineTest {
         assertArrayEquals(rec[1], robotGot);
         assertArrayEquals(rec[0], playerGot.get(20, TimeUnit.SECONDS));
         assertTrue(pipeline.droppedBytes() > 0, "observation had to drop");
-        release.countDown();
+        stuck.release.countDown();
         assertTrue(gapReported.await(20, TimeUnit.SECONDS), "the gap is published as a diagnostic: " + diagnostics);
     }
 
@@ -288,6 +271,21 @@ class ObservationPipelineTest {
 
         synchronized byte[] bytes(Direction dir) {
             return (dir == Direction.CLIENT_TO_SERVER ? c2s : s2c).toByteArray();
+        }
+    }
+
+    /** A log on a disk that hangs: each wire event waits until {@link #release} (or an interrupt). */
+    static final class HungLog extends RecordingRecorder {
+        final CountDownLatch release = new CountDownLatch(1);
+
+        @Override
+        public void wire(ConnectionInfo c, Direction dir, WireEvent e, long t) throws IOException {
+            try {
+                release.await();
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+            super.wire(c, dir, e, t);
         }
     }
 

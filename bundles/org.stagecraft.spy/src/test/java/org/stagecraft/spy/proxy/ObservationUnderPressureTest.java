@@ -28,7 +28,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.BooleanSupplier;
 
-import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.stagecraft.player.codec.CodecRegistry;
@@ -38,6 +38,7 @@ import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.MessageType;
 import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.player.xdr.XdrWriter;
+import org.stagecraft.spy.Cleanup;
 import org.stagecraft.streams.StreamBus;
 
 /**
@@ -47,15 +48,8 @@ import org.stagecraft.streams.StreamBus;
  */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class ObservationUnderPressureTest {
-    private final List<AutoCloseable> cleanup = new ArrayList<>();
-
-    @AfterEach
-    void close() throws Exception {
-        Collections.reverse(cleanup);
-        for (AutoCloseable c : cleanup) {
-            c.close();
-        }
-    }
+    @AutoClose
+    private final Cleanup cleanup = new Cleanup();
 
     /** The two byte streams (client to server, server to client) of a one-connection recording. */
     private static byte[][] recorded(String trace) throws IOException {

@@ -6,7 +6,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.Executor;
 import java.util.concurrent.Executors;
@@ -15,6 +14,7 @@ import org.stagecraft.player.wire.Direction;
 import org.stagecraft.recording.trace.TraceCorpus;
 import org.stagecraft.recording.trace.TraceReader;
 import org.stagecraft.recording.trace.TraceRecord;
+import org.stagecraft.spy.Cleanup;
 
 /**
  * One recorded connection played through a spy in the pipeline tests: its two byte streams, a
@@ -46,7 +46,7 @@ final class RecordedSession {
      * A stand-in Player for one session: sends {@code s2c} and completes {@code received} with what the
      * program sent. Its socket is added to {@code cleanup}.
      */
-    static ServerSocket player(byte[] s2c, CompletableFuture<byte[]> received, List<AutoCloseable> cleanup)
+    static ServerSocket player(byte[] s2c, CompletableFuture<byte[]> received, Cleanup cleanup)
             throws IOException {
         ServerSocket up = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
         cleanup.add(up);
