@@ -6,6 +6,11 @@ import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.Arrays;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.BooleanSupplier;
 
 /**
@@ -32,6 +37,29 @@ final class PingProbe {
         int count() {
             return sortedMicros.length;
         }
+    }
+
+    /** Pings running on a thread of their own while a workload plays; {@link #stop()} ends them. */
+    static final class Background {
+        private final AtomicBoolean running = new AtomicBoolean(true);
+        private final Future<Rtts> pings;
+
+        private Background(InetSocketAddress at, Workload w, long intervalNanos) {
+            ExecutorService one = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().factory());
+            pings = one.submit(() -> run(at, w, 1_000_000, running::get, intervalNanos));
+            one.shutdown();
+        }
+
+        /** Stops pinging; the round trips so far. */
+        Rtts stop() throws Exception {
+            running.set(false);
+            return pings.get(60, TimeUnit.SECONDS);
+        }
+    }
+
+    /** Starts pinging in the background, one every {@code intervalNanos} at most (0: back to back). */
+    static Background inBackground(InetSocketAddress at, Workload w, long intervalNanos) {
+        return new Background(at, w, intervalNanos);
     }
 
     /** Pings at most {@code max} times after a warm-up, and stops early once {@code more} says so. */

@@ -14,7 +14,6 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.PlayerFramer;
@@ -146,24 +145,18 @@ public final class RelayBench {
                 // and once at the recorded pace: a relay that sleeps between messages takes other paths (parking,
                 // waking, small batches) than the fast passes, and the JIT compiles those too (seen: ~9 µs of
                 // compiler time per message in the window without this pass)
-                AtomicBoolean warming = new AtomicBoolean(true);
-                Future<PingProbe.Rtts> warmPings = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().factory())
-                        .submit(() -> PingProbe.run(pingAt, w, 1_000_000, warming::get, 10_000_000L));
+                PingProbe.Background warmPings = PingProbe.inBackground(pingAt, w, 10_000_000L);
                 playPaced(relay, sessions, fronts, peers);
-                warming.set(false);
-                warmPings.get(60, TimeUnit.SECONDS);
+                warmPings.stop();
                 players.verifyServed(sessions.size());
             }
             double cpu0 = ProcStat.cpuSeconds(relay.pids());
             var threads0 = ProcStat.cpuSecondsByThread(relay.pids());
-            AtomicBoolean running = new AtomicBoolean(true);
-            Future<PingProbe.Rtts> probe = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().factory())
-                    .submit(() -> PingProbe.run(pingAt, w, 1_000_000, running::get, 10_000_000L));
+            PingProbe.Background probe = PingProbe.inBackground(pingAt, w, 10_000_000L);
             t0 = System.nanoTime();
             playPaced(relay, sessions, fronts, peers);
             elapsed = System.nanoTime() - t0;
-            running.set(false);
-            PingProbe.Rtts r = probe.get(60, TimeUnit.SECONDS);
+            PingProbe.Rtts r = probe.stop();
             rtts = r.sortedMicros();
             pings = r.pings();
             players.verifyServed(sessions.size());
@@ -223,9 +216,7 @@ public final class RelayBench {
                     }));
                 }
             }
-            AtomicBoolean loaded = new AtomicBoolean(true);
-            Future<PingProbe.Rtts> underLoad = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().factory())
-                    .submit(() -> PingProbe.run(pingAt, w, 1_000_000, loaded::get));
+            PingProbe.Background underLoad = PingProbe.inBackground(pingAt, w, 0);
             double cpu0 = ProcStat.cpuSeconds(relay.pids());
             var threads0 = ProcStat.cpuSecondsByThread(relay.pids());
             long t0 = System.nanoTime();
@@ -238,8 +229,7 @@ public final class RelayBench {
                 }
             }
             elapsed = System.nanoTime() - t0;
-            loaded.set(false);
-            PingProbe.Rtts b = underLoad.get(60, TimeUnit.SECONDS);
+            PingProbe.Rtts b = underLoad.stop();
             busy = b.sortedMicros();
             busyPings = b.pings();
             players.verifyServed(programs.size());
