@@ -83,6 +83,18 @@ class FoxgloveServerTest {
         }
     }
 
+    /**
+     * The server counts a viewer once it has queued its serverInfo and advertise, so a viewer can
+     * read both before it is counted: polls (1 ms apart) until it is, for at most 10 s.
+     */
+    private static void awaitViewers(FoxgloveServer s, int n) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (s.counters().viewers() != n) {
+            assertTrue(System.nanoTime() < end, "the server counts " + s.counters().viewers() + " viewers, not " + n);
+            Thread.sleep(1);
+        }
+    }
+
     private static byte[] json(String s) {
         return s.getBytes(StandardCharsets.UTF_8);
     }
@@ -107,7 +119,7 @@ class FoxgloveServerTest {
         assertEquals("foxglove.Log", c.get("schemaName").getAsString());
         assertEquals("jsonschema", c.get("schemaEncoding").getAsString());
         assertEquals(LOG_SCHEMA, c.get("schema").getAsString());
-        assertEquals(1, s.counters().viewers());
+        awaitViewers(s, 1);
     }
 
     @Test

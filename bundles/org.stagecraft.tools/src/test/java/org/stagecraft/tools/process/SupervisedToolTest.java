@@ -84,7 +84,7 @@ class SupervisedToolTest {
     void notReadyInTimeIsAnErrorNamingThePortAndNothingIsLeft() throws Exception {
         int port = Ports.free("127.0.0.1", 1).get(0);
         SupervisedTool t = tool(sh("silent", "echo waiting for nothing; exec sleep 300")
-                .withReadiness(Readiness.ports("127.0.0.1", List.of(port)), Duration.ofMillis(700)));
+                .withReadiness(Readiness.ports("127.0.0.1", List.of(port)), Duration.ofSeconds(2))); // time for sh to say its line
         ToolException e = assertThrows(ToolException.class, t::start);
         assertTrue(e.getMessage().contains("tool 'silent': not ready within"), e.getMessage());
         assertTrue(e.getMessage().contains("127.0.0.1:[" + port + "]"), e.getMessage());

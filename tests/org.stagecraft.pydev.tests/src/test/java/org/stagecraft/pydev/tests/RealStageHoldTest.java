@@ -256,10 +256,10 @@ class RealStageHoldTest {
     @Test
     void theEmergencyStopStopsTheRealRobotAndReleaseLetsItDriveOn() throws Exception {
         Path mark = tmp.resolve("mark");
-        ILaunch launch = launch(config(true, false, 500, Map.of("MARK_EVERY", "2.0", "MARKS", "1", "MARK", mark.toString())),
+        ILaunch launch = launch(config(true, false, 500, Map.of("MARK_EVERY", "3.0", "MARKS", "1", "MARK", mark.toString())),
                 ILaunchManager.RUN_MODE);
+        HoldTimes times = holdTimes(launch); // before the pose reader's start: the hold may come while it starts
         Poses poses = poses(launch);
-        HoldTimes times = holdTimes(launch);
         long at = Long.parseLong(awaitFile(mark.resolveSibling("mark1")).trim());
         poses.awaitSampleAfter(at + 500 * MS);
         double speed = poses.speed(at - 1000 * MS, at);
@@ -284,10 +284,10 @@ class RealStageHoldTest {
     @Test
     void theSilenceWatchdogStopsTheRobotOfAProgramThatGoesSilentAndReleasesItWhenItSendsAgain() throws Exception {
         Path mark = tmp.resolve("mark");
-        ILaunch launch = launch(config(true, true, 500, Map.of("MARK_EVERY", "2.0", "MARKS", "1", "MARK", mark.toString(),
+        ILaunch launch = launch(config(true, true, 500, Map.of("MARK_EVERY", "3.0", "MARKS", "1", "MARK", mark.toString(),
                 "SILENCE", "5")), ILaunchManager.RUN_MODE);
+        HoldTimes times = holdTimes(launch); // before the pose reader's start: the hold may come while it starts
         Poses poses = poses(launch);
-        HoldTimes times = holdTimes(launch);
         long silent = Long.parseLong(awaitFile(mark.resolveSibling("mark1")).trim());
         long heldAt = times.awaitHeld(HoldReason.WATCHDOG);
         poses.awaitSampleAfter(silent + 4500 * MS);
@@ -334,8 +334,8 @@ class RealStageHoldTest {
         try (DebugEvents events = new DebugEvents()) {
             launch = launch(config(hold, false, 500, Map.of("MARK_EVERY", "2.5", "MARKS", String.valueOf(marks), "MARK", mark.toString())),
                     ILaunchManager.DEBUG_MODE);
+            HoldTimes times = holdTimes(launch); // before the pose reader's start: the hold may come while it starts
             Poses poses = poses(launch);
-            HoldTimes times = holdTimes(launch);
             SessionHolds holds = SessionHolds.of(launch);
             assertEquals(hold, holds.hold().isEnabled(), "holds are enabled exactly when the option is on");
             DebugEvent last = null;

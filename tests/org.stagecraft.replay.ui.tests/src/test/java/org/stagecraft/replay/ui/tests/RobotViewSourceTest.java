@@ -5,6 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PlatformUI;
 import org.junit.jupiter.api.AfterEach;
@@ -15,6 +18,8 @@ import org.stagecraft.core.streams.BusSources;
 import org.stagecraft.core.streams.WorkbenchBus;
 import org.stagecraft.scene.RobotId;
 import org.stagecraft.scene.RobotState;
+import org.stagecraft.scene.SharedWorld;
+import org.stagecraft.scene.WorldModel;
 import org.stagecraft.replay.ui.SessionLogEditor;
 import org.stagecraft.views.RobotView;
 
@@ -48,15 +53,26 @@ class RobotViewSourceTest {
         RobotId robot = new RobotId(TestLogs.PORT_LISTEN);
         assertTrue(!view.scene().world().robot(robot).poseSeen(), "nothing replayed yet");
 
-        e.replayer().setSpeed(16);
-        e.replayer().play();
-        Ui.spinUntil(() -> view.scene().world().robot(robot).poseSeen() && !view.scene().feed("laser").snapshot().isEmpty(),
-                30_000, "the replayed robot and its laser in the view");
-        Ui.spinUntil(() -> view.frames() > framesBefore, 10_000, "the view to redraw with the replayed data");
-        RobotState first = view.scene().world().robot(robot);
-        Ui.spinUntil(() -> view.scene().world().mount(new org.stagecraft.scene.DeviceAddress(robot, 62, 0)).elements().size() == 16,
-                10_000, "the sonar geometry (16 transducers) from the log's GET_GEOM reply");
-        Ui.spinUntil(() -> !view.scene().world().robot(robot).pose().equals(first.pose()), 30_000, "the robot to move");
+        // the poses the view's world takes, seen as they come: at 16x the replay can be over before this
+        // thread looks, so "moved" is judged from what was seen, not against a pose read afterwards
+        WorldModel world = SharedWorld.of(e.bus()).world();
+        assertSame(world, view.scene().world(), "the view draws the editor's world");
+        Set<Object> poses = ConcurrentHashMap.newKeySet();
+        try (AutoCloseable seeing = SharedWorld.of(e.bus()).listen(() -> {
+            RobotState r = world.robot(robot);
+            if (r.poseSeen()) {
+                poses.add(r.pose());
+            }
+        })) {
+            e.replayer().setSpeed(16);
+            e.replayer().play();
+            Ui.spinUntil(() -> view.scene().world().robot(robot).poseSeen() && !view.scene().feed("laser").snapshot().isEmpty(),
+                    30_000, "the replayed robot and its laser in the view");
+            Ui.spinUntil(() -> view.frames() > framesBefore, 10_000, "the view to redraw with the replayed data");
+            Ui.spinUntil(() -> view.scene().world().mount(new org.stagecraft.scene.DeviceAddress(robot, 62, 0)).elements().size() == 16,
+                    10_000, "the sonar geometry (16 transducers) from the log's GET_GEOM reply");
+            Ui.spinUntil(() -> poses.size() >= 2, 30_000, "the robot to move");
+        }
         e.replayer().pause();
         assertTrue(WorkbenchBus.get() != e.bus());
 
