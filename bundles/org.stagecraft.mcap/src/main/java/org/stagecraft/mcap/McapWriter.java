@@ -88,7 +88,6 @@ public final class McapWriter implements AutoCloseable {
 
     private final List<ChunkIndexEntry> chunkIndexes = new ArrayList<>();
     private final List<MetadataIndexEntry> metadataIndexes = new ArrayList<>();
-    private final Map<Integer, Long> channelCounts = new TreeMap<>();
     private long messageCount;
     private long startTime = Long.MAX_VALUE;
     private long endTime = Long.MIN_VALUE;
@@ -210,7 +209,6 @@ public final class McapWriter implements AutoCloseable {
         endTime = Math.max(endTime, logTime);
         chunkMessages++;
         messageCount++;
-        channelCounts.merge(channel, 1L, Long::sum);
         return chunk;
     }
 
@@ -387,8 +385,10 @@ public final class McapWriter implements AutoCloseable {
         b.u64(messageCount).u16(schemaWritten.size()).u32(channelWritten.size()).u32(0).u32(metadataIndexes.size())
                 .u32(chunkIndexes.size()).u64(messageCount == 0 ? 0 : startTime).u64(messageCount == 0 ? 0 : endTime);
         int map = b.beginU32();
-        for (Map.Entry<Integer, Long> e : channelCounts.entrySet()) {
-            b.u16(e.getKey()).u64(e.getValue());
+        for (int channel = 1; channel <= channels.size(); channel++) {
+            if (sequences[channel] > 0) { // a channel's sequence numbers count its messages
+                b.u16(channel).u64(sequences[channel]);
+            }
         }
         b.endU32(map);
         b.end(at);

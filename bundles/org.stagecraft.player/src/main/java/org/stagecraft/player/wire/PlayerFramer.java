@@ -45,7 +45,8 @@ public final class PlayerFramer {
     private final byte[] head = new byte[MessageHeader.SIZE];
     private int headLength;
     private @Nullable MessageHeader header;
-    private byte @Nullable [] headerBytes;
+    /** In PAYLOAD: the header's bytes, for reporting the message if it ends unfinished (reused: one per framer). */
+    private final byte[] headerBytes = new byte[MessageHeader.SIZE];
     /** The pieces of the payload being assembled, as received. */
     private final List<byte[]> parts = new ArrayList<>();
     private int partsLength;
@@ -158,7 +159,7 @@ public final class PlayerFramer {
             itemOffset += MessageHeader.SIZE;
         } else {
             header = h;
-            headerBytes = Arrays.copyOfRange(b, off, off + MessageHeader.SIZE);
+            System.arraycopy(b, off, headerBytes, 0, MessageHeader.SIZE);
             state = State.PAYLOAD;
         }
     }
@@ -182,7 +183,6 @@ public final class PlayerFramer {
         emitFrame(Objects.requireNonNull(header), payload);
         itemOffset += MessageHeader.SIZE + payload.length;
         header = null;
-        headerBytes = null;
         state = State.HEADER;
     }
 
@@ -230,7 +230,6 @@ public final class PlayerFramer {
         }
         headLength = 0;
         header = null;
-        headerBytes = null;
         flushSkipped();
         state = State.HEADER;
     }
@@ -258,7 +257,6 @@ public final class PlayerFramer {
         flushSkipped();
         headLength = 0;
         header = null;
-        headerBytes = null;
         itemOffset += lostBytes;
         state = State.HEADER;
     }
@@ -279,7 +277,6 @@ public final class PlayerFramer {
         discardRemaining = header.size() - partsLength;
         parts.clear();
         partsLength = 0;
-        headerBytes = null;
         state = State.DISCARD;
         if (discardRemaining == 0) {
             discard(0, 0);
