@@ -163,9 +163,12 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     public static final Duration DEFAULT_OBSERVATION_WAIT = Duration.ofSeconds(1);
     /**
      * Queued bytes past which a forwarding thread waits for observation (complete observation): enough
-     * to keep the observation thread busy, small enough to stay in the young generation.
+     * to keep the observation thread busy, small enough to stay in the young generation. Measured at
+     * full speed (bench spy, ten rounds each): 1 MiB took 1.69 µs of CPU per message and relayed 313
+     * MB/s (medians), 4 MiB 2.05 µs and 251 MB/s, 16 MiB worse again; what waits longer is copied by
+     * more young collections.
      */
-    static final long FLOW_BYTES = 4L << 20;
+    static final long FLOW_BYTES = 1L << 20;
     /** How long the observation thread sleeps between rounds when nothing wakes it. */
     static final long TICK_MILLIS = 50;
     /** Queued bytes that wake the observation thread before its tick. */
