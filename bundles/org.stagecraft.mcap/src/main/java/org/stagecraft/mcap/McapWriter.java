@@ -35,7 +35,7 @@ import org.eclipse.jdt.annotation.Nullable;
  * the disk is full) the method throws, the writer cuts a seekable channel back to its last complete
  * chunk, and every later call throws too.
  *
- * <p>Thread-safe: every method is synchronized.
+ * <p>Thread-safe: every method is synchronized except {@link #force()}, which may run beside writing.
  */
 public final class McapWriter implements AutoCloseable {
     /** What the header says and how chunks are made. */
@@ -67,7 +67,7 @@ public final class McapWriter implements AutoCloseable {
     /**
      * A finished chunk as written (definitions, chunk record, message indexes), compressed straight
      * into it; kept from chunk to chunk with the zstd context, so that writing a chunk allocates
-     * nothing per chunk (it was the log's largest source of garbage).
+     * no chunk-sized buffers (they were the log's largest source of garbage).
      */
     private final RecordBuffer chunkOut;
     private final CRC32 chunkCrc = new CRC32();
@@ -254,7 +254,7 @@ public final class McapWriter implements AutoCloseable {
             try {
                 fc.force(false);
             } catch (java.nio.channels.ClosedChannelException e) {
-                // closed meanwhile: close() forced it
+                // closed meanwhile (by close(), or after a failure): nothing left to force
             }
         }
     }

@@ -11,7 +11,8 @@ import java.util.concurrent.atomic.LongAdder;
 import org.eclipse.jdt.annotation.Nullable;
 
 /**
- * A subscription with its buffer and its drain task. Publishers call {@link #offer}, lock-free and
+ * A subscription with its buffer and its drain task. Publishers call {@link #offer} (or, for many
+ * messages at once, {@link #buffer} for each and {@link #schedule} once), lock-free and
  * bounded; at most one drain task runs (or is queued on the executor) at a time.
  */
 final class BusSubscription implements Subscription {

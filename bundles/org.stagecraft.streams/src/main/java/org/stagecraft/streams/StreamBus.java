@@ -106,14 +106,16 @@ public final class StreamBus implements AutoCloseable {
             return;
         }
         published.increment();
-        ConcurrentHashMap<StreamKey, BusSubscription[]> table = routes;
-        BusSubscription @Nullable [] route = table.get(key);
-        if (route == null) {
-            route = learn(key, table);
-        }
-        for (BusSubscription s : route) {
+        for (BusSubscription s : route(key)) {
             s.offer(m);
         }
+    }
+
+    /** The subscriptions whose patterns match {@code key}, learnt once per key. */
+    private BusSubscription[] route(StreamKey key) {
+        ConcurrentHashMap<StreamKey, BusSubscription[]> table = routes;
+        BusSubscription @Nullable [] route = table.get(key);
+        return route != null ? route : learn(key, table);
     }
 
     /**
@@ -129,14 +131,8 @@ public final class StreamBus implements AutoCloseable {
         published.add(messages.size());
         List<BusSubscription> due = new ArrayList<>(4);
         for (StreamMessage m : messages) {
-            StreamKey key = m.key();
-            ConcurrentHashMap<StreamKey, BusSubscription[]> table = routes;
-            BusSubscription[] route = table.get(key);
-            if (route == null) {
-                route = learn(key, table);
-            }
-            for (BusSubscription s : route) {
-                if (s.buffer(m) && !contains(due, s)) {
+            for (BusSubscription s : route(m.key())) {
+                if (s.buffer(m) && !due.contains(s)) { // identity: subscriptions do not define equals
                     due.add(s);
                 }
             }
@@ -144,15 +140,6 @@ public final class StreamBus implements AutoCloseable {
         for (BusSubscription s : due) {
             s.schedule();
         }
-    }
-
-    private static boolean contains(List<BusSubscription> list, BusSubscription s) {
-        for (BusSubscription x : list) {
-            if (x == s) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /**

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 
@@ -71,7 +72,7 @@ public final class LogRecorder implements SpyRecorder {
     /** The first failure of the log, or null. */
     private volatile @Nullable Throwable failure;
     /** A force to the disk is running ({@link #forceAside()}). */
-    private final java.util.concurrent.atomic.AtomicBoolean forcing = new java.util.concurrent.atomic.AtomicBoolean();
+    private final AtomicBoolean forcing = new AtomicBoolean();
     /** A failed force, for the log thread to act on (it alone closes the writer). */
     private volatile @Nullable Throwable forceFailure;
 

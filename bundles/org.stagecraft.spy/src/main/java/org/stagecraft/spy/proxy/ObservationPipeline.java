@@ -211,7 +211,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private volatile @Nullable String recorderError;
     private long lastFlushNanos = System.nanoTime();
     private final Set<ConnectionInfo> openConnections = new LinkedHashSet<>();
-    /** What this round publishes, in order; handed to the bus at the end of the round (or before a release). */
+    /** What this round publishes, in order; handed to the bus at the end of the round, every 256 items, before a release. */
     private final List<StreamMessage> outbox = new ArrayList<>(512);
     private final Map<Integer, MessageKeys> messageKeys = new HashMap<>();
 
@@ -422,7 +422,8 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     }
 
     /**
-     * Takes {@code n} bytes of room within the flow limit ({@link #FLOW_BYTES}): complete observation
+     * Takes {@code n} bytes of room within the flow limit ({@code flowBytes}: {@link #FLOW_BYTES}, at most half
+     * the memory bound): complete observation
      * keeps the queue that short, so what waits in it (decoded, several times its wire size) stays
      * small and young for the garbage collector; the larger bound of the constructor is for
      * best-effort observation and a stalled one, where {@link #admit} decides.
@@ -452,6 +453,12 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         }
     }
 
+    /** The observation thread is done with {@code b} (handled or failed): its room is free, and that is progress. */
+    private void observed(Batch b) {
+        release(b.inflow(), b.bytes());
+        madeProgress(b.bytes());
+    }
+
     /** Called by the observation thread when it has released queued bytes: progress for waiting forwarders. */
     private void madeProgress(long bytes) {
         observedProgress.addAndGet(bytes);
@@ -471,8 +478,8 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
 
     private void enqueue(Item item) {
         queue.add(item);
-        if (idle && (item instanceof Stop || queuedBytes.get() >= WAKE_BYTES)) {
-            LockSupport.unpark(worker);
+        if (item instanceof Stop || queuedBytes.get() >= WAKE_BYTES) {
+            wake();
         }
     }
 
@@ -822,8 +829,8 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         }
         try {
             sendOutbox();
-        } catch (Throwable t) {
-            outbox.clear();
+        } catch (Throwable ignored) {
+            // stopping: nothing left to tell (sendOutbox has cleared the outbox)
         }
     }
 
@@ -833,8 +840,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         } catch (Throwable t) {
             if (item instanceof Batch b) {
                 droppedBytes.add(b.bytes());
-                release(b.inflow(), b.bytes());
-                madeProgress(b.bytes());
+                observed(b);
                 failure(b.connection(), b.dir(), b.events().length > 0 ? b.events()[0].offset() : 0,
                         "publishing or recording failed", t, b.t());
             } else {
@@ -859,8 +865,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 for (int i = 0; i < events.length; i++) {
                     event(b.connection(), b.dir(), events[i], b.decoded()[i], b.t());
                 }
-                release(b.inflow(), b.bytes());
-                madeProgress(b.bytes());
+                observed(b);
             }
             case Abandoned a -> diagnostic(a.connection(), a.dir(), a.offset(), String.format(Locale.ROOT,
                     "observation of the %d-byte message at offset %d was given up after %d bytes of it: unfinished"
