@@ -25,8 +25,15 @@ import sys
 import threading
 
 
+SAY_LOCK = threading.Lock()
+
+
 def say(text):
-    print("standin: " + text, flush=True)
+    # Connections are served on threads of their own; print() writes the text and the newline
+    # separately, so two reports at once could run into one line. One whole write under a lock.
+    with SAY_LOCK:
+        sys.stdout.write("standin: " + text + "\n")
+        sys.stdout.flush()
 
 
 def strip_comments(text):
