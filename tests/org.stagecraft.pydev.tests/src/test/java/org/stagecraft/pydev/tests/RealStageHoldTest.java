@@ -118,8 +118,10 @@ class RealStageHoldTest {
                     robot.set_speed(%s, 0.0)
                     if done < marks and time.monotonic() - last > every:
                         done += 1  %s
-                        with open(os.environ["MARK"] + str(done), "w") as f:
+                        # renamed into place: the test reads the mark as soon as it exists
+                        with open(os.environ["MARK"] + ".tmp", "w") as f:
                             f.write("%%d\\n" %% time.monotonic_ns())
+                        os.rename(os.environ["MARK"] + ".tmp", os.environ["MARK"] + str(done))
                         if silence > 0:
                             time.sleep(silence)  # silent: no command, no read
                         last = time.monotonic()

@@ -66,6 +66,8 @@ class PlayerLifecycleLaunchTest {
             if (!l.isTerminated()) {
                 l.terminate();
             }
+            // the session stops in the background: the next test must not see it running
+            Await.until("the launch is terminated", WAIT, l::isTerminated);
         }
         project.delete(true, true, new NullProgressMonitor());
     }

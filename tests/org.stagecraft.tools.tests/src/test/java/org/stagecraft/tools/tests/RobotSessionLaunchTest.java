@@ -105,6 +105,8 @@ class RobotSessionLaunchTest {
             if (!l.isTerminated()) {
                 l.terminate();
             }
+            // the session stops in the background: the next test must not see it running
+            Await.until("the launch is terminated", WAIT, l::isTerminated);
         }
         ILog.of(Platform.getBundle("org.stagecraft.tools.ui")).removeLogListener(logListener);
         ToolPreferences.setTools(List.of());
