@@ -6,6 +6,8 @@ import java.net.URL;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.time.Duration;
+import java.util.List;
 import java.util.stream.Stream;
 
 import org.eclipse.core.resources.IFile;
@@ -16,6 +18,9 @@ import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.FileLocator;
 import org.eclipse.core.runtime.NullProgressMonitor;
 import org.eclipse.core.runtime.Platform;
+import org.eclipse.debug.core.DebugException;
+import org.eclipse.debug.core.ILaunch;
+import org.stagecraft.tests.support.Await;
 
 /** Workspace projects with the corpus's Player worlds, the stand-in Player, the recorded traces. */
 final class Fixtures {
@@ -71,5 +76,15 @@ final class Fixtures {
         Files.writeString(file, text);
         p.refreshLocal(IResource.DEPTH_INFINITE, new NullProgressMonitor());
         return p.getFile(path);
+    }
+
+    /** Ends the launches and waits until each has: a session stops in the background, and the next test must not see it running. */
+    static void terminateAll(List<ILaunch> launches, Duration wait) throws DebugException {
+        for (ILaunch l : launches) {
+            if (!l.isTerminated()) {
+                l.terminate();
+            }
+            Await.until("the launch is terminated", wait, l::isTerminated);
+        }
     }
 }

@@ -62,13 +62,7 @@ class PlayerLifecycleLaunchTest {
 
     @AfterEach
     void tearDown() throws Exception {
-        for (ILaunch l : launches) {
-            if (!l.isTerminated()) {
-                l.terminate();
-            }
-            // the session stops in the background: the next test must not see it running
-            Await.until("the launch is terminated", WAIT, l::isTerminated);
-        }
+        Fixtures.terminateAll(launches, WAIT);
         project.delete(true, true, new NullProgressMonitor());
     }
 

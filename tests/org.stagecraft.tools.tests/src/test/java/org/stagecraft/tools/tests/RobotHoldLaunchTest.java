@@ -75,13 +75,7 @@ class RobotHoldLaunchTest {
     @AfterEach
     void tearDown() throws Exception {
         EmergencyStop.get().release();
-        for (ILaunch l : launches) {
-            if (!l.isTerminated()) {
-                l.terminate();
-            }
-            // the session stops in the background: the next test must not see it running
-            Await.until("the launch is terminated", WAIT, l::isTerminated);
-        }
+        Fixtures.terminateAll(launches, WAIT);
         project.delete(true, true, new NullProgressMonitor());
     }
 

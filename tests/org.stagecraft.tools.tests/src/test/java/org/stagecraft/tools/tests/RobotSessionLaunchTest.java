@@ -101,13 +101,7 @@ class RobotSessionLaunchTest {
 
     @AfterEach
     void tearDown() throws Exception {
-        for (ILaunch l : launches) {
-            if (!l.isTerminated()) {
-                l.terminate();
-            }
-            // the session stops in the background: the next test must not see it running
-            Await.until("the launch is terminated", WAIT, l::isTerminated);
-        }
+        Fixtures.terminateAll(launches, WAIT);
         ILog.of(Platform.getBundle("org.stagecraft.tools.ui")).removeLogListener(logListener);
         ToolPreferences.setTools(List.of());
         peers.shutdownNow();
