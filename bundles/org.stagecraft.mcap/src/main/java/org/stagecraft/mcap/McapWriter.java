@@ -2,6 +2,7 @@ package org.stagecraft.mcap;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
+import java.nio.channels.ClosedChannelException;
 import java.nio.channels.FileChannel;
 import java.nio.channels.SeekableByteChannel;
 import java.nio.channels.WritableByteChannel;
@@ -253,7 +254,7 @@ public final class McapWriter implements AutoCloseable {
         if (out instanceof FileChannel fc && fc.isOpen()) {
             try {
                 fc.force(false);
-            } catch (java.nio.channels.ClosedChannelException e) {
+            } catch (ClosedChannelException e) {
                 // closed meanwhile (by close(), or after a failure): nothing left to force
             }
         }
