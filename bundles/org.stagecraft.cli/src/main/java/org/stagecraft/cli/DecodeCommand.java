@@ -15,9 +15,13 @@ import org.stagecraft.player.codec.PlayerDecoder;
 final class DecodeCommand {
 
     int run(String[] args, PrintStream out, PrintStream err) {
-        Path file = InputFile.require("decode", args, err);
+        if (args.length != 1) {
+            err.println("usage: stagecraft decode FILE");
+            return ExitCode.USAGE;
+        }
+        Path file = InputFile.readable("decode", args[0], err);
         if (file == null) {
-            return 2;
+            return ExitCode.FAILED;
         }
         EventJson json = new EventJson(new PlayerDecoder(CodecRegistry.standard()));
         BufferedWriter w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
@@ -35,11 +39,11 @@ final class DecodeCommand {
         } catch (IOException | UncheckedIOException e) {
             flushQuietly(w);
             err.println("stagecraft decode: " + e.getMessage());
-            return 1;
+            return ExitCode.FAILED;
         } catch (RuntimeException | OutOfMemoryError e) {
             flushQuietly(w);
             err.println("stagecraft decode: " + CommandFailure.describe(file, e));
-            return 1;
+            return ExitCode.FAILED;
         }
     }
 

@@ -74,24 +74,26 @@ final class ExportCommand {
         } catch (IllegalArgumentException e) {
             err.println("stagecraft export: " + e.getMessage());
             err.println(USAGE);
-            return 2;
+            return ExitCode.USAGE;
         }
         StreamPattern pattern;
         try {
             pattern = stream == null ? null : ExportFilter.parsePattern(stream, registry);
         } catch (IllegalArgumentException e) {
             err.println("stagecraft export: --stream: " + e.getMessage());
-            return 2;
+            return ExitCode.USAGE;
         }
         ExportFilter filter = new ExportFilter(from, until, pattern, grep);
-        Path input = Path.of(file);
-        if (!Files.isRegularFile(input)) {
-            err.println("stagecraft export: " + input + ": " + (Files.exists(input) ? "not a readable file" : "no such file"));
-            return 1;
+        Path input = InputFile.readable("export", file, err);
+        if (input == null) {
+            return ExitCode.FAILED;
         }
         try (SessionLog log = SessionLogs.open(input)) {
-            for (LogProblem p : log.problems()) {
-                err.println("stagecraft export: " + input + ": " + p);
+            if (log.messageCount() == 0 && log.problems().stream().anyMatch(LogProblem::dataLost)) {
+                // a file nothing could be read from gets no empty output file
+                LogLosses.print("export", log, err);
+                err.println("stagecraft export: " + input + ": nothing could be read; nothing written");
+                return ExitCode.FAILED;
             }
             switch (format) {
                 case "mcap" -> {
@@ -120,13 +122,17 @@ final class ExportCommand {
                     }
                 }
             }
-            return 0;
+            // damage inside a log is found as its chunks are read: what the export could not read is known now
+            return LogLosses.report("export", log, err);
         } catch (NoSuchFileException e) {
             err.println("stagecraft export: " + e.getFile() + ": cannot be written or read (no such file or directory)");
-            return 1;
+            return ExitCode.FAILED;
         } catch (IOException e) {
             err.println("stagecraft export: " + e.getMessage());
-            return 1;
+            return ExitCode.FAILED;
+        } catch (RuntimeException | OutOfMemoryError e) {
+            err.println("stagecraft export: " + CommandFailure.describe(input, e));
+            return ExitCode.FAILED;
         }
     }
 

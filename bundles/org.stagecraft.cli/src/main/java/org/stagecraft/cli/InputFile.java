@@ -6,24 +6,29 @@ import java.nio.file.Path;
 
 import org.eclipse.jdt.annotation.Nullable;
 
-/** Checks a command's FILE argument and explains what is wrong with it. */
+/** Checks a command's input file and says what is wrong with it, the same way for every command. */
 final class InputFile {
     private InputFile() {
     }
 
-    /** @return the path, or null after printing why it cannot be read */
-    static @Nullable Path require(String command, String[] args, PrintStream err) {
-        if (args.length != 1) {
-            err.println("usage: stagecraft " + command + " FILE");
-            return null;
-        }
-        Path p = Path.of(args[0]);
+    /**
+     * @return the path, or null after printing "stagecraft COMMAND: FILE: why" (then the command exits
+     *         with {@link ExitCode#FAILED})
+     */
+    static @Nullable Path readable(String command, String name, PrintStream err) {
+        Path p = Path.of(name);
+        String why = null;
         if (!Files.exists(p)) {
-            err.println("stagecraft " + command + ": " + p + ": no such file");
-            return null;
+            why = "no such file";
+        } else if (Files.isDirectory(p)) {
+            why = "a folder, not a file";
+        } else if (!Files.isRegularFile(p)) {
+            why = "not a regular file";
+        } else if (!Files.isReadable(p)) {
+            why = "not readable (permission denied)";
         }
-        if (!Files.isRegularFile(p) || !Files.isReadable(p)) {
-            err.println("stagecraft " + command + ": " + p + ": not a readable file");
+        if (why != null) {
+            err.println("stagecraft " + command + ": " + p + ": " + why);
             return null;
         }
         return p;

@@ -19,6 +19,9 @@ public final class Main {
                             a log (spy log, trace or writelog file), or part of it, in another format
               replay FILE --to [PORT=]HOST:PORT [...] [--speed X] [--loop]
                             serve a recorded session to robot programs as the recorded Player did
+            exit codes: 0 everything asked for was done; 1 nothing usable was done (the input could not be
+              read at all, the output not written); 2 the command line is wrong; 3 done with losses: part of
+              the input could not be read (said on stderr, with counts)
             """;
 
     private Main() {
@@ -31,7 +34,7 @@ public final class Main {
     public static int run(String[] args, PrintStream out, PrintStream err) {
         if (args.length == 0 || args[0].equals("-h") || args[0].equals("--help") || args[0].equals("help")) {
             (args.length == 0 ? err : out).print(USAGE);
-            return args.length == 0 ? 2 : 0;
+            return args.length == 0 ? ExitCode.USAGE : ExitCode.DONE;
         }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
         return switch (args[0]) {
@@ -43,7 +46,7 @@ public final class Main {
             default -> {
                 err.println("stagecraft: unknown command '" + args[0] + "'");
                 err.print(USAGE);
-                yield 2;
+                yield ExitCode.USAGE;
             }
         };
     }

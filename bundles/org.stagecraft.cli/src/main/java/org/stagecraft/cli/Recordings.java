@@ -1,19 +1,21 @@
 package org.stagecraft.cli;
 
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Iterator;
+import java.util.Locale;
 import java.util.function.Consumer;
 
 import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.session.StreamId;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.WireEvent;
+import org.stagecraft.recording.trace.TraceFormatException;
 import org.stagecraft.recording.trace.TraceFraming;
+import org.stagecraft.replay.log.SessionLogs;
+import org.stagecraft.replay.writelog.WritelogImport;
 import org.stagecraft.spy.log.LogEntry;
 import org.stagecraft.spy.log.SpyLogReader;
 
@@ -25,22 +27,25 @@ final class Recordings {
     private Recordings() {
     }
 
-    static boolean isSpyLog(Path file) throws IOException {
-        byte[] head = new byte[8];
-        try (InputStream in = Files.newInputStream(file)) {
-            int n = in.readNBytes(head, 0, head.length);
-            return n == head.length && SpyLogReader.isMcap(head);
-        }
-    }
-
     /**
      * Delivers every banner, message and unframed piece in order (a log's: log-time order). A damaged
-     * chunk of a spy log is skipped; @return what could not be read, for the command to report.
+     * chunk of a spy log is skipped, and a trace is read up to a line that is not valid; @return what
+     * could not be read, for the command to report.
+     *
+     * @throws IOException naming the file when it cannot be read at all: not the format its name or
+     *                     content promises (a {@code .mcap} that is not MCAP, a Player writelog file)
      */
     static LogRecovery frame(Path file, Consumer<? super SessionEvent> sink) throws IOException {
-        if (!isSpyLog(file)) {
-            TraceFraming.frame(file, sink);
-            return LogRecovery.NONE;
+        byte[] head = SessionLogs.head(file);
+        if (!SpyLogReader.isMcap(head)) {
+            if (String.valueOf(file.getFileName()).toLowerCase(Locale.ROOT).endsWith(".mcap")) {
+                throw new IOException(SessionLogs.notMcap(file, head));
+            }
+            if (WritelogImport.looksLikeWritelog(head)) {
+                throw new IOException(file + ": a Player writelog file; decode and stats read spy logs and"
+                        + " player-traces (export reads writelog files too, e.g. export FILE --format csv)");
+            }
+            return trace(file, sink);
         }
         long entries = 0;
         try (SpyLogReader log = SpyLogReader.open(file)) {
@@ -62,7 +67,21 @@ final class Recordings {
                 }
             }
             int intact = log.recovered() ? log.chunkCount() : log.chunkCount() - log.skippedChunks();
-            return new LogRecovery(log.recovered(), intact, log.damage(), entries);
+            return new LogRecovery(log.recovered(), intact, log.damage(), log.messagesLost(), entries, null);
+        }
+    }
+
+    /** A player-trace, up to its end or to the first line that is not valid. */
+    private static LogRecovery trace(Path file, Consumer<? super SessionEvent> sink) throws IOException {
+        long[] events = { 0 };
+        try {
+            TraceFraming.frame(file, e -> {
+                events[0]++;
+                sink.accept(e);
+            });
+            return LogRecovery.whole(events[0]);
+        } catch (TraceFormatException e) {
+            return LogRecovery.stoppedAt(e, events[0]);
         }
     }
 

@@ -5,7 +5,6 @@ import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.UnknownHostException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -15,7 +14,6 @@ import java.util.concurrent.CountDownLatch;
 
 import org.stagecraft.recording.play.PlayableConnection;
 import org.stagecraft.recording.play.RecordedPlayer;
-import org.stagecraft.replay.log.LogProblem;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.log.SessionLogs;
 
@@ -70,27 +68,29 @@ final class ReplayCommand {
         } catch (IllegalArgumentException e) {
             err.println("stagecraft replay: " + e.getMessage());
             err.println(USAGE);
-            return 2;
+            return ExitCode.USAGE;
         }
-        Path input = Path.of(file);
-        if (!Files.isRegularFile(input)) {
-            err.println("stagecraft replay: " + input + ": " + (Files.exists(input) ? "not a readable file" : "no such file"));
-            return 1;
+        Path input = InputFile.readable("replay", file, err);
+        if (input == null) {
+            return ExitCode.FAILED;
         }
         // the log stays open while serving: each served connection streams from it
         try (SessionLog log = SessionLogs.open(input)) {
-            for (LogProblem p : log.problems()) {
-                err.println("stagecraft replay: " + input + ": " + p);
-            }
             List<RecordedServerStreams.LogConnection> recorded = RecordedServerStreams.read(log);
+            // said before serving: reading the recorded streams has met whatever damage the log has
+            int losses = LogLosses.report("replay", log, err);
             if (recorded.isEmpty()) {
                 err.println("stagecraft replay: " + input + ": no connection in which the Player server sent anything");
-                return 1;
+                return ExitCode.FAILED;
             }
-            return serve(recorded, targets, speed, loop, out, err);
+            int served = serve(recorded, targets, speed, loop, out, err);
+            return served == ExitCode.DONE ? losses : served;
         } catch (IOException e) {
             err.println("stagecraft replay: " + e.getMessage());
-            return 1;
+            return ExitCode.FAILED;
+        } catch (RuntimeException | OutOfMemoryError e) {
+            err.println("stagecraft replay: " + CommandFailure.describe(input, e));
+            return ExitCode.FAILED;
         }
     }
 
@@ -105,7 +105,7 @@ final class ReplayCommand {
             listeners = listeners(targets, byPort);
         } catch (IllegalArgumentException | UnknownHostException e) {
             err.println("stagecraft replay: " + e.getMessage());
-            return 2;
+            return ExitCode.USAGE;
         }
         int toServe = listeners.stream().mapToInt(l -> l.connections().size()).sum();
         CountDownLatch served = new CountDownLatch(toServe);
@@ -132,13 +132,13 @@ final class ReplayCommand {
             } else {
                 served.await();
             }
-            return 0;
+            return ExitCode.DONE;
         } catch (IOException e) {
             err.println("stagecraft replay: " + e.getMessage());
-            return 1;
+            return ExitCode.FAILED;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            return 1;
+            return ExitCode.FAILED;
         }
     }
 

@@ -30,9 +30,13 @@ final class StatsCommand {
     }
 
     int run(String[] args, PrintStream out, PrintStream err) {
-        Path file = InputFile.require("stats", args, err);
+        if (args.length != 1) {
+            err.println("usage: stagecraft stats FILE");
+            return ExitCode.USAGE;
+        }
+        Path file = InputFile.readable("stats", args[0], err);
         if (file == null) {
-            return 2;
+            return ExitCode.FAILED;
         }
         CodecRegistry registry = CodecRegistry.standard();
         PlayerDecoder decoder = new PlayerDecoder(registry);
@@ -64,10 +68,13 @@ final class StatsCommand {
             });
         } catch (IOException e) {
             err.println("stagecraft stats: " + e.getMessage());
-            return 1;
+            return ExitCode.FAILED;
         } catch (RuntimeException | OutOfMemoryError e) {
             err.println("stagecraft stats: " + CommandFailure.describe(file, e));
-            return 1;
+            return ExitCode.FAILED;
+        }
+        if (recovery.nothingRead()) {
+            return recovery.report("stats", file, err); // no table of zeros for a file nothing could be read from
         }
         out.printf("%-4s %-12s %-10s %-18s %10s %12s%n", "dir", "interface", "type", "subtype", "messages", "bytes");
         for (Map.Entry<Key, Tally> en : counts.entrySet()) {

@@ -4,10 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,15 +28,9 @@ class BadInputFilesTest {
     @TempDir
     Path tmp;
 
-    private record Result(int code, String out, String err) {
-    }
 
-    private static Result run(String... args) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code = Main.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8));
-        return new Result(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+    private static CommandRun run(String... args) {
+        return CommandRun.of(args);
     }
 
     private Path file(String name, byte[] content) throws IOException {
@@ -48,7 +40,7 @@ class BadInputFilesTest {
     }
 
     /** Exit 1 and exactly one line on stderr: "stagecraft COMMAND: FILE:LINE: REASON", no exception in sight. */
-    private static void assertRefused(String command, Result r, Path file, int line, String reason) {
+    private static void assertRefused(String command, CommandRun r, Path file, int line, String reason) {
         assertEquals(1, r.code(), r.err());
         String expected = "stagecraft " + command + ": " + file + ":" + line + ": ";
         assertTrue(r.err().startsWith(expected), "expected '" + expected + "...' but got: " + r.err());
@@ -103,7 +95,7 @@ class BadInputFilesTest {
                 command, f.toString()).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         String err = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(p.waitFor(60, TimeUnit.SECONDS));
-        assertRefused(command, new Result(p.exitValue(), "", err), f, 2, "line too long (more than 16 MiB");
+        assertRefused(command, new CommandRun(p.exitValue(), "", err), f, 2, "line too long (more than 16 MiB");
         assertFalse(err.contains("not valid JSON"), err);
     }
 

@@ -48,15 +48,9 @@ class ExportAndReplayCommandsTest {
     @TempDir
     Path tmp;
 
-    private record Result(int code, String out, String err) {
-    }
 
-    private static Result run(String... args) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code = Main.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8));
-        return new Result(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+    private static CommandRun run(String... args) {
+        return CommandRun.of(args);
     }
 
     /** What the export should report, counted from the decoded trace rather than written down. */
@@ -97,7 +91,7 @@ class ExportAndReplayCommandsTest {
     void exportWritesEachFormatAndSaysWhatIsWrong() throws IOException {
         TraceFacts facts = TraceFacts.of(TRACE);
         assertTrue(facts.laserData() > 0 && facts.playerSynchs() > 0 && facts.playerVersion() != null, facts.toString());
-        Result csv = run("export", TRACE.toString(), "--format", "csv", "--stream", "dev=laser type=DATA");
+        CommandRun csv = run("export", TRACE.toString(), "--format", "csv", "--stream", "dev=laser type=DATA");
         assertEquals(0, csv.code(), csv.err());
         List<String> lines = csv.out().lines().toList();
         assertTrue(lines.get(0).startsWith("time,conn,dir,iface,index,type,subtype,size,timestamp," + facts.firstScanColumns()),
@@ -106,7 +100,7 @@ class ExportAndReplayCommandsTest {
         assertTrue(csv.err().contains(facts.laserData() + " rows"), csv.err());
 
         Path wl = tmp.resolve("gt.log");
-        Result w = run("export", TRACE.toString(), "--format", "writelog", "--out", wl.toString());
+        CommandRun w = run("export", TRACE.toString(), "--format", "writelog", "--out", wl.toString());
         assertEquals(0, w.code(), w.err());
         assertTrue(Files.readString(wl).startsWith("## Player version " + facts.playerVersion() + " \n"),
                 Files.readString(wl).lines().findFirst().orElse(""));
@@ -114,20 +108,20 @@ class ExportAndReplayCommandsTest {
 
         // the writelog export opens like any log: export it again, as MCAP
         Path mcap = tmp.resolve("gt.mcap");
-        Result m = run("export", wl.toString(), "--format", "mcap", "--out", mcap.toString());
+        CommandRun m = run("export", wl.toString(), "--format", "mcap", "--out", mcap.toString());
         assertEquals(0, m.code(), m.err());
         assertTrue(Files.size(mcap) > 100_000);
 
-        Result noOut = run("export", TRACE.toString(), "--format", "mcap");
+        CommandRun noOut = run("export", TRACE.toString(), "--format", "mcap");
         assertEquals(2, noOut.code());
         assertTrue(noOut.err().contains("--format mcap needs --out FILE"), noOut.err());
-        Result badFormat = run("export", TRACE.toString(), "--format", "xls");
+        CommandRun badFormat = run("export", TRACE.toString(), "--format", "xls");
         assertEquals(2, badFormat.code());
         assertTrue(badFormat.err().contains("csv, writelog or mcap"), badFormat.err());
-        Result missing = run("export", tmp.resolve("nope.mcap").toString(), "--format", "csv");
+        CommandRun missing = run("export", tmp.resolve("nope.mcap").toString(), "--format", "csv");
         assertEquals(1, missing.code());
         assertTrue(missing.err().contains("nope.mcap: no such file"), missing.err());
-        Result badPattern = run("export", TRACE.toString(), "--format", "csv", "--stream", "dev=warpdrive");
+        CommandRun badPattern = run("export", TRACE.toString(), "--format", "csv", "--stream", "dev=warpdrive");
         assertEquals(2, badPattern.code());
         assertTrue(badPattern.err().contains("warpdrive"), badPattern.err());
     }
@@ -280,20 +274,20 @@ class ExportAndReplayCommandsTest {
     @Test
     void replaySaysWhichPortIsInUseAndWhichFileIsMissing() throws IOException {
         try (ServerSocket busy = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            Result r = run("replay", TRACE.toString(), "--to", "127.0.0.1:" + busy.getLocalPort());
+            CommandRun r = run("replay", TRACE.toString(), "--to", "127.0.0.1:" + busy.getLocalPort());
             assertEquals(1, r.code());
             assertTrue(r.err().contains("cannot listen on port " + busy.getLocalPort()), r.err());
         }
-        Result missing = run("replay", tmp.resolve("gone.trace.jsonl").toString(), "--to", "127.0.0.1:0");
+        CommandRun missing = run("replay", tmp.resolve("gone.trace.jsonl").toString(), "--to", "127.0.0.1:0");
         assertEquals(1, missing.code());
         assertTrue(missing.err().contains("gone.trace.jsonl: no such file"), missing.err());
-        Result noPort = run("replay", TRACE.toString(), "--to", "7000=127.0.0.1:0");
+        CommandRun noPort = run("replay", TRACE.toString(), "--to", "7000=127.0.0.1:0");
         assertEquals(2, noPort.code());
         assertTrue(noPort.err().contains("no connection to port 7000 (its ports: [6665])"), noPort.err());
-        Result tooMany = run("replay", TRACE.toString(), "--to", "127.0.0.1:0", "--to", "127.0.0.1:0");
+        CommandRun tooMany = run("replay", TRACE.toString(), "--to", "127.0.0.1:0", "--to", "127.0.0.1:0");
         assertEquals(2, tooMany.code());
         assertTrue(tooMany.err().contains("only 1 Player port"), tooMany.err());
-        Result noTo = run("replay", TRACE.toString());
+        CommandRun noTo = run("replay", TRACE.toString());
         assertEquals(2, noTo.code());
     }
 }

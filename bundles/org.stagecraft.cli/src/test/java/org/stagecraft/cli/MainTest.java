@@ -4,10 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Base64;
@@ -20,33 +17,22 @@ import org.stagecraft.player.xdr.XdrReader;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
-import com.google.gson.JsonParser;
 import org.stagecraft.recording.trace.TraceCorpus;
 
 class MainTest {
-
-    private record Result(int code, String out, String err) {
-        List<JsonObject> json() {
-            return out.lines().map(l -> JsonParser.parseString(l).getAsJsonObject()).toList();
-        }
-    }
 
     /** The shared recordings; the build passes their folder (see the parent pom). */
     private static Path trace(String name) {
         return TraceCorpus.file(name);
     }
 
-    private static Result run(String... args) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code = Main.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8));
-        return new Result(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+    private static CommandRun run(String... args) {
+        return CommandRun.of(args);
     }
 
     @Test
     void decodePrintsOneJsonObjectPerBannerAndMessageInStreamOrder() {
-        Result r = run("decode", trace("requests.reqclient.trace.jsonl").toString());
+        CommandRun r = run("decode", trace("requests.reqclient.trace.jsonl").toString());
         assertEquals(0, r.code(), r.err());
         List<JsonObject> lines = r.json();
         assertEquals("Player v.3.1.1-dev", lines.get(0).get("ident").getAsString());
@@ -65,7 +51,7 @@ class MainTest {
 
     @Test
     void numbersParseBackToTheExactWireValues() {
-        Result r = run("decode", trace("pioneer-laser-sonar.gt.trace.jsonl").toString());
+        CommandRun r = run("decode", trace("pioneer-laser-sonar.gt.trace.jsonl").toString());
         JsonObject scan = r.json().stream().filter(o -> "laser".equals(o.has("iface") ? o.get("iface").getAsString() : "")
                 && o.get("type").getAsInt() == 1).findFirst().orElseThrow();
         JsonObject body = scan.getAsJsonObject("body");
@@ -80,7 +66,7 @@ class MainTest {
 
     @Test
     void garbageSynchTimestampsPrintAsValidJson() throws IOException {
-        Result r = run("decode", trace("pioneer-laser-sonar.gt.trace.jsonl").toString());
+        CommandRun r = run("decode", trace("pioneer-laser-sonar.gt.trace.jsonl").toString());
         long synchs = r.json().stream().filter(o -> o.has("type") && o.get("type").getAsInt() == 5).count();
         assertTrue(synchs > 100, "SYNCH messages: " + synchs);
     }
@@ -98,7 +84,7 @@ class MainTest {
         Files.writeString(trace, "{\"format\":\"player-trace\",\"version\":1}\n"
                 + "{\"t\":1.5,\"conn\":3,\"port\":6666,\"dir\":\"c2s\",\"data\":\"" + Base64.getEncoder().encodeToString(msg)
                 + "\"}\n");
-        Result r = run("decode", trace.toString());
+        CommandRun r = run("decode", trace.toString());
         assertEquals(0, r.code());
         JsonObject o = r.json().get(0);
         assertEquals(3, o.get("conn").getAsInt());
@@ -124,13 +110,13 @@ class MainTest {
 
     @Test
     void unreadableFilesExitNonZeroWithAClearMessage(@TempDir Path dir) throws IOException {
-        Result missing = run("decode", dir.resolve("nope.jsonl").toString());
-        assertEquals(2, missing.code());
+        CommandRun missing = run("decode", dir.resolve("nope.jsonl").toString());
+        assertEquals(ExitCode.FAILED, missing.code(), "a file that is not there is no usage error");
         assertTrue(missing.err().contains("nope.jsonl: no such file"), missing.err());
 
         Path bad = dir.resolve("bad.jsonl");
         Files.writeString(bad, "hello\n");
-        Result invalid = run("stats", bad.toString());
+        CommandRun invalid = run("stats", bad.toString());
         assertEquals(1, invalid.code());
         assertTrue(invalid.err().contains("bad.jsonl:1:"), invalid.err());
 
@@ -140,7 +126,7 @@ class MainTest {
 
     @Test
     void statsCountsPerDirectionInterfaceTypeAndSubtype() {
-        Result r = run("stats", trace("requests.reqclient.trace.jsonl").toString());
+        CommandRun r = run("stats", trace("requests.reqclient.trace.jsonl").toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().lines().anyMatch(l -> l.matches("s2c\\s+player\\s+SYNCH\\s+OK\\s+69\\s+2760")), r.out());
         assertTrue(r.out().lines().anyMatch(l -> l.matches("s2c\\s+laser\\s+RESP_NACK\\s+SET_CONFIG\\s+2\\s+80")),

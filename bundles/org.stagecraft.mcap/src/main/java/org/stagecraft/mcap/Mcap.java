@@ -2,6 +2,8 @@ package org.stagecraft.mcap;
 
 import java.util.Arrays;
 
+import org.eclipse.jdt.annotation.Nullable;
+
 /**
  * MCAP (https://mcap.dev, major version 0): the magic bytes and the record opcodes, from the
  * specification.
@@ -40,6 +42,32 @@ public final class Mcap {
     /** True if {@code head} starts with MCAP's magic bytes. */
     public static boolean isMcap(byte[] head) {
         return head.length >= MAGIC.length && Arrays.equals(head, 0, MAGIC.length, MAGIC, 0, MAGIC.length);
+    }
+
+    /**
+     * Why a file starting with {@code head} (its first bytes, or all of a shorter file) is not MCAP,
+     * for people, e.g. "it is empty (0 bytes)"; null when it starts with the magic.
+     */
+    public static @Nullable String whyNotMcap(byte[] head) {
+        if (isMcap(head)) {
+            return null;
+        }
+        if (head.length == 0) {
+            return "it is empty (0 bytes)";
+        }
+        if (head.length < MAGIC.length) {
+            return "it has only " + head.length + " byte" + (head.length == 1 ? "" : "s") + ", fewer than MCAP's "
+                    + MAGIC.length + "-byte magic";
+        }
+        return "it does not start with MCAP's magic bytes (" + hex(MAGIC) + ") but with " + hex(Arrays.copyOf(head, MAGIC.length));
+    }
+
+    private static String hex(byte[] b) {
+        StringBuilder s = new StringBuilder();
+        for (byte x : b) {
+            s.append(s.isEmpty() ? "" : " ").append(Character.forDigit((x >> 4) & 0xf, 16)).append(Character.forDigit(x & 0xf, 16));
+        }
+        return s.toString();
     }
 
     static long u64(byte[] a, int at) {

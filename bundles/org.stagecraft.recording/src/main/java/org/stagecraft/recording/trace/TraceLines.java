@@ -77,7 +77,7 @@ final class TraceLines implements Closeable {
             int take = end - chunkPos;
             if (length + take > maxLineBytes) {
                 lineNumber++;
-                throw new TraceFormatException(name + ":" + lineNumber + ": line too long (more than "
+                throw new TraceFormatException(name, lineNumber, "line too long (more than "
                         + describe(maxLineBytes) + "; a player-trace line holds one recv() of at most "
                         + describe(MAX_LINE_BYTES) + ")");
             }
@@ -159,7 +159,7 @@ final class TraceLines implements Closeable {
     }
 
     private TraceFormatException bad(int index, String why) {
-        return new TraceFormatException(name + ":" + lineNumber + ": column " + (index + 1) + ": " + why);
+        return new TraceFormatException(name, lineNumber, "column " + (index + 1) + ": " + why);
     }
 
     private static String hex(int b) {

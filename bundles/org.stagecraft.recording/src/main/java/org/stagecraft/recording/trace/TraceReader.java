@@ -50,7 +50,7 @@ public final class TraceReader implements Closeable {
             text = in.next();
             if (text == null) {
                 if (!sawHeader) {
-                    throw new TraceFormatException(name + ": empty file, expected a \"" + FORMAT + "\" header line");
+                    throw new TraceFormatException(name, 0, "empty file, expected a \"" + FORMAT + "\" header line");
                 }
                 return null;
             }
@@ -68,7 +68,7 @@ public final class TraceReader implements Closeable {
                 throw fail("the line (" + text.length() + " characters) does not fit in the memory left (maximum heap "
                         + (Runtime.getRuntime().maxMemory() >> 20) + " MiB)");
             }
-            throw new TraceFormatException(where() + "not valid JSON (" + parserMessage(e) + ")", e);
+            throw new TraceFormatException(name, line, "not valid JSON (" + parserMessage(e) + ")", e);
         } catch (StackOverflowError e) { // nesting deeper than the parser's stack: not a trace line anyway
             throw fail("not valid JSON (nested too deeply)");
         }
@@ -150,12 +150,8 @@ public final class TraceReader implements Closeable {
         return text.length() <= 40 ? text : text.substring(0, 40) + "...";
     }
 
-    private String where() {
-        return name + ":" + line + ": ";
-    }
-
     private TraceFormatException fail(String why) {
-        return new TraceFormatException(where() + why);
+        return new TraceFormatException(name, line, why);
     }
 
     private JsonElement field(JsonObject o, String key) throws TraceFormatException {

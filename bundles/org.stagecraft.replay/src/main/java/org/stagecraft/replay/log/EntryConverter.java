@@ -27,7 +27,18 @@ final class EntryConverter {
     ConnectionInfo connection(int conn, int port) {
         @Nullable ConnectionInfo c = connections.get(conn);
         // a recovered log may have lost the open event: name the connection by what is left
-        return c != null ? c : new ConnectionInfo(conn, port, "connection " + conn, "port " + port, "");
+        return c != null ? c : named(conn, port, "", "", "");
+    }
+
+    /**
+     * A connection with the addresses the log has for it; one whose open event was lost (a damaged or
+     * cut-off log) or carried none is named by what is left, without spaces, for the names are stream
+     * addresses on the bus and in exports.
+     */
+    static ConnectionInfo named(int conn, int port, @Nullable String client, @Nullable String listen,
+            @Nullable String upstream) {
+        return new ConnectionInfo(conn, port, client == null || client.isEmpty() ? "connection-" + conn : client,
+                listen == null || listen.isEmpty() ? "port-" + port : listen, upstream == null ? "" : upstream);
     }
 
     /** A connection that carried no bytes is not among the indexed ones: its open event names it. */

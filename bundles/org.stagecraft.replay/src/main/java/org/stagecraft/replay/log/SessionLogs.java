@@ -7,7 +7,9 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 
 import org.stagecraft.player.codec.CodecRegistry;
@@ -52,16 +54,42 @@ public final class SessionLogs {
         };
     }
 
-    /** What {@code file} holds, told by its first bytes. */
+    /**
+     * What {@code file} holds, told by its first bytes; when they tell nothing, by what its name
+     * promises: a {@code .mcap} file that is not MCAP is refused as such, and a {@code .jsonl} file is
+     * taken for a player-trace, whose reader then says on which line and why it is not one.
+     *
+     * @throws IOException naming the file once and what it is not
+     */
     public static LogFormat formatOf(Path file) throws IOException {
-        byte[] head;
+        byte[] head = head(file);
+        Optional<LogFormat> format = formatOf(head);
+        if (format.isPresent()) {
+            return format.get();
+        }
+        String name = String.valueOf(file.getFileName()).toLowerCase(Locale.ROOT);
+        if (name.endsWith(".mcap")) {
+            throw new IOException(notMcap(file, head));
+        }
+        if (name.endsWith(".jsonl")) {
+            return LogFormat.PLAYER_TRACE;
+        }
+        throw new IOException(file + ": not a log Stagecraft can open (expected an MCAP"
+                + " spy log, a player-trace .trace.jsonl file or a Player writelog file)");
+    }
+
+    /** The first {@value #HEAD} bytes of {@code file} (all of a shorter one). */
+    public static byte[] head(Path file) throws IOException {
         try (InputStream in = Files.newInputStream(file)) {
-            head = in.readNBytes(HEAD);
+            return in.readNBytes(HEAD);
         } catch (NoSuchFileException e) {
             throw new NoSuchFileException(file.toString(), null, "no such file");
         }
-        return formatOf(head).orElseThrow(() -> new IOException(file + ": not a log Stagecraft can open (expected an MCAP"
-                + " spy log, a player-trace .trace.jsonl file or a Player writelog file)"));
+    }
+
+    /** E.g. "x.mcap: not an MCAP file: it is empty (0 bytes)": for a file whose name promises MCAP. */
+    public static String notMcap(Path file, byte[] head) {
+        return file + ": not an MCAP file: " + Objects.requireNonNullElse(SpyLogReader.whyNotMcap(head), "it is one");
     }
 
     /**

@@ -8,7 +8,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.LogConnection;
@@ -26,7 +25,7 @@ final class SpyLogSession implements SessionLog {
     private final SpyLogReader reader;
     private final List<ConnectionInfo> connections;
     private final EntryConverter converter;
-    private final List<LogProblem> problems;
+    private final List<LogProblem> importProblems;
     private final Runnable cleanup;
 
     SpyLogSession(Path path, LogFormat format, SpyLogReader reader, CodecRegistry codecs, List<LogProblem> importProblems,
@@ -39,26 +38,11 @@ final class SpyLogSession implements SessionLog {
         // from the summary when the log records addresses with its channels; else from the open events
         List<LogConnection> known = reader.indexedConnections();
         for (LogConnection c : known.isEmpty() ? reader.connections() : known) {
-            byId.put(c.conn(), new ConnectionInfo(c.conn(), c.port(), orElse(c.client(), "connection " + c.conn()),
-                    orElse(c.listen(), "port " + c.port()), orElse(c.upstream(), "")));
+            byId.put(c.conn(), EntryConverter.named(c.conn(), c.port(), c.client(), c.listen(), c.upstream()));
         }
         this.connections = List.copyOf(byId.values());
         this.converter = new EntryConverter(codecs, Collections.unmodifiableMap(byId));
-        List<LogProblem> p = new ArrayList<>(importProblems);
-        if (format == LogFormat.SPY_LOG && reader.recovered()) {
-            p.add(new LogProblem("end of file", reader.endTimeNanos(), "the log has no summary (cut off, or still being"
-                    + " written): read by scanning, " + reader.chunkCount() + " complete chunks recovered up to "
-                    + seconds(reader.endTimeNanos() - reader.startTimeNanos()) + " s"));
-        }
-        if (reader.skippedChunks() > 0) {
-            p.add(new LogProblem("file", reader.endTimeNanos(),
-                    reader.skippedChunks() + " damaged chunks skipped; their messages are missing"));
-        }
-        this.problems = List.copyOf(p);
-    }
-
-    private static String orElse(@Nullable String s, String other) {
-        return s == null || s.isEmpty() ? other : s;
+        this.importProblems = List.copyOf(importProblems);
     }
 
     private static String seconds(long nanos) {
@@ -100,9 +84,25 @@ final class SpyLogSession implements SessionLog {
         return connections;
     }
 
+    /**
+     * The import's problems, then the log's own: no summary (a note, or a loss when its last record
+     * was cut off) and each damaged part skipped. Damage inside an indexed log is found when its chunk
+     * is read, so the list can grow while the log is read; ask again after reading.
+     */
     @Override
     public List<LogProblem> problems() {
-        return problems;
+        List<LogProblem> p = new ArrayList<>(importProblems);
+        if (format == LogFormat.SPY_LOG && reader.recovered()) {
+            String cutOff = reader.cutOffEnd();
+            p.add(new LogProblem("end of file", reader.endTimeNanos(), "the log has no summary (cut off, or still being"
+                    + " written): read by scanning, " + reader.chunkCount() + " complete chunks recovered up to "
+                    + seconds(reader.endTimeNanos() - reader.startTimeNanos()) + " s"
+                    + (cutOff == null ? "" : "; the incomplete record after them is lost: " + cutOff), cutOff != null));
+        }
+        for (String part : reader.skippedParts()) {
+            p.add(new LogProblem("damaged part", reader.endTimeNanos(), part + "; skipped, its messages are missing"));
+        }
+        return p;
     }
 
     @Override

@@ -63,8 +63,8 @@ final class TraceImport {
                     });
                 });
             } catch (TraceFormatException e) {
-                problems.add(new LogProblem("line " + reader.line(), last[0],
-                        e.getMessage() + "; the trace is read up to the line before"));
+                problems.add(new LogProblem(e.line() > 0 ? "line " + e.line() : "file", last[0],
+                        e.reason() + (e.line() > 1 ? "; the trace is read up to the line before" : "")));
             } catch (UncheckedIOException e) {
                 throw e.getCause();
             }

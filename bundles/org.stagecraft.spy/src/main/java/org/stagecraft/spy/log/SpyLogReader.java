@@ -117,6 +117,11 @@ public final class SpyLogReader implements AutoCloseable {
         return Mcap.isMcap(head);
     }
 
+    /** Why a file starting with {@code head} is not MCAP, for people; null when it is (see {@link Mcap#whyNotMcap}). */
+    public static @Nullable String whyNotMcap(byte[] head) {
+        return Mcap.whyNotMcap(head);
+    }
+
     /** Knows a channel by its encoding and schema (ids are not part of the layout). */
     private void channel(Channel c) throws SpyLogFormatException {
         if (channels.containsKey(c.id())) {
@@ -307,6 +312,49 @@ public final class SpyLogReader implements AutoCloseable {
             out.add(undefinedMessages + " messages on channels whose definitions were lost (skipped)");
         }
         return out;
+    }
+
+    /**
+     * The damaged parts skipped so far, for people, as {@link #damage()} says them but without the
+     * cut-off end of a recovered log ({@link #cutOffEnd()}): what is missing from inside the log.
+     */
+    public List<String> skippedParts() {
+        List<String> out = new ArrayList<>();
+        for (Damage d : mcap.damage()) {
+            if (!d.cutOff()) {
+                out.add(d.describe());
+            }
+        }
+        if (undefinedMessages > 0) {
+            out.add(undefinedMessages + " messages on channels whose definitions were lost (skipped)");
+        }
+        return out;
+    }
+
+    /**
+     * Messages known to be lost with the damaged parts skipped so far (a damaged chunk's messages
+     * where its index says how many; messages on channels whose definitions were lost); parts whose
+     * count nobody knows (the cut-off end) add nothing here.
+     */
+    public long messagesLost() {
+        long n = undefinedMessages;
+        for (Damage d : mcap.damage()) {
+            n += Math.max(0, d.messagesLost());
+        }
+        return n;
+    }
+
+    /**
+     * The incomplete last record of a file that was cut off (a crash or a full disk in the middle of a
+     * write), for people, or null when the file ends after a whole record.
+     */
+    public @Nullable String cutOffEnd() {
+        for (Damage d : mcap.damage()) {
+            if (d.cutOff()) {
+                return d.describe();
+            }
+        }
+        return null;
     }
 
     /** The session metadata given to {@link SpyLogWriter#create}. */
