@@ -20,8 +20,8 @@ import org.stagecraft.recording.trace.TraceCorpus;
  * The long fuzz run of the decode path ({@code ./stagecraft bench fuzz}): mutated variants of the
  * recorded traffic, bigger than the test suite's, for as long as asked, each through the trace reader,
  * the framers, the decoder ({@link FramingCheck}: every byte accounted for, the session framer agreeing
- * with one plain framer per stream) and {@code stagecraft decode} (exit 0 with one JSON line per event,
- * or exit 1 with the reader's one-line message). A variant that breaks any of it is saved with its
+ * with one plain framer per stream) and {@code stagecraft decode} (one JSON line per event, and the exit
+ * code and message {@link ExpectedDecode} says). A variant that breaks any of it is saved with its
  * description under {@code fuzz-failures/} and counted; the run goes on. Prints progress and figures;
  * exits 1 if anything failed. Lives with the tests of the command line tool (and is compiled with them)
  * because it runs the tool's own {@code decode}; not a test itself: the suite runs the short fuzz,
@@ -77,9 +77,10 @@ public final class FuzzSoak {
                 int code = Main.run(new String[] { "decode", file.toString() }, new PrintStream(out, false, StandardCharsets.UTF_8),
                         new PrintStream(err, true, StandardCharsets.UTF_8));
                 String errText = err.toString(StandardCharsets.UTF_8);
-                String expectedErr = o.refusal() == null ? "" : "stagecraft decode: " + o.refusal() + System.lineSeparator();
-                if (code != (o.refusal() == null ? 0 : 1) || !errText.equals(expectedErr)) {
-                    problem = "decode exited " + code + " with '" + errText.strip() + "'; expected '" + expectedErr.strip() + "'";
+                ExpectedDecode expected = ExpectedDecode.of(o);
+                if (code != expected.code() || !errText.equals(expected.err())) {
+                    problem = "decode exited " + code + " with '" + errText.strip() + "'; expected " + expected.code() + " with '"
+                            + expected.err().strip() + "'";
                 } else if (out.lines != o.events()) {
                     problem = "decode printed " + out.lines + " lines for " + o.events() + " events";
                 } else {
@@ -120,7 +121,7 @@ public final class FuzzSoak {
                 streamBytes / 1e6);
         System.out.printf("  framed:   %d messages, %d unframed bytes, %d decode problems, %d JSON lines from decode%n", messages,
                 unframed, problems, jsonLines);
-        System.out.printf("  refused:  %d files (file, line and reason, exit 1)%n", refused);
+        System.out.printf("  refused:  %d files (file, line and reason; exit 1, or 3 after what came before the bad line)%n", refused);
         System.out.printf("  failures: %d (unchecked exceptions, bytes not accounted for, framers disagreeing, wrong exit)%n",
                 broken.size());
         System.out.printf("  memory:   live heap after a full GC every 100 variants: first %.1f MiB, last %.1f MiB, at most %.1f MiB"
