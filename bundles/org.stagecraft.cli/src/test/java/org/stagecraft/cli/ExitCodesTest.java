@@ -194,23 +194,20 @@ class ExitCodesTest {
 
     @Test
     void aFolderIsTheSameFailureForEveryCommand() throws IOException {
-        Path dir = Files.createDirectory(tmp.resolve("a-folder.mcap"));
-        for (String[] args : List.of(new String[] { "decode", dir.toString() }, new String[] { "stats", dir.toString() },
-                exportArgs(dir, "csv"), new String[] { "replay", dir.toString(), "--to", "127.0.0.1:0" })) {
-            CommandRun r = CommandRun.of(args);
-            assertEquals(ExitCode.FAILED, r.code(), args[0] + ": " + r.err());
-            assertEquals("stagecraft " + args[0] + ": " + dir + ": a folder, not a file" + System.lineSeparator(), r.err());
-        }
+        assertTheSameFailureForEveryCommand(Files.createDirectory(tmp.resolve("a-folder.mcap")), "a folder, not a file");
     }
 
     @Test
     void aMissingFileIsTheSameFailureForEveryCommand() {
-        Path gone = tmp.resolve("gone.mcap");
-        for (String[] args : List.of(new String[] { "decode", gone.toString() }, new String[] { "stats", gone.toString() },
-                exportArgs(gone, "csv"), new String[] { "replay", gone.toString(), "--to", "127.0.0.1:0" })) {
+        assertTheSameFailureForEveryCommand(tmp.resolve("gone.mcap"), "no such file");
+    }
+
+    private void assertTheSameFailureForEveryCommand(Path input, String why) {
+        for (String[] args : List.of(new String[] { "decode", input.toString() }, new String[] { "stats", input.toString() },
+                exportArgs(input, "csv"), new String[] { "replay", input.toString(), "--to", "127.0.0.1:0" })) {
             CommandRun r = CommandRun.of(args);
             assertEquals(ExitCode.FAILED, r.code(), args[0] + ": " + r.err());
-            assertEquals("stagecraft " + args[0] + ": " + gone + ": no such file" + System.lineSeparator(), r.err());
+            assertEquals("stagecraft " + args[0] + ": " + input + ": " + why + System.lineSeparator(), r.err());
         }
     }
 
