@@ -76,6 +76,11 @@ public final class EndOfConnections implements SpyRecorder {
     }
 
     @Override
+    public @Nullable Logged logged() {
+        return log != null ? log.logged() : null;
+    }
+
+    @Override
     public void close() throws IOException {
         if (log != null) {
             log.close();

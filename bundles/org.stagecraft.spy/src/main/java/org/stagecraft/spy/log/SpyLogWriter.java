@@ -64,6 +64,13 @@ public final class SpyLogWriter implements AutoCloseable {
     /** Addresses of each opened connection, repeated in its wire channels' metadata. */
     private final Map<Integer, Map<String, String>> addresses = new HashMap<>();
     private long wireCount;
+    /** Wire messages (and their wire bytes) in the open chunk, and in complete chunks in the file. */
+    private long openWire;
+    private long openWireBytes;
+    private long loggedWire;
+    private long loggedWireBytes;
+    /** {@link McapWriter#bytesWritten()} when the counts above were last settled: it moves only when a chunk is written. */
+    private long settledAt;
     /** A frame's header, re-encoded as on the wire (XDR, big-endian) before its payload. */
     private final ByteBuffer headerScratch = ByteBuffer.allocate(MessageHeader.SIZE);
     private long lastLogTime = Long.MIN_VALUE;
@@ -102,6 +109,7 @@ public final class SpyLogWriter implements AutoCloseable {
         eventChannel = mcap.addChannel(Layout.TOPIC_EVENTS, Layout.EVENT_ENCODING, eventSchema, Map.of());
         ownChannels.add(eventChannel);
         wireSchema = mcap.addSchema(WireProto.WIRE_MESSAGE, Layout.PROTOBUF, WireProto.DESCRIPTOR_SET);
+        settledAt = mcap.bytesWritten();
     }
 
     // --- the contract ----------------------------------------------------------------------------
@@ -163,7 +171,13 @@ public final class SpyLogWriter implements AutoCloseable {
                 b.bytes(headerScratch.array(), 0, MessageHeader.SIZE);
                 b.bytes(bytes, 0, bytes.length);
             }
-            mcap.endMessage();
+            openWire++;
+            openWireBytes += bytes.length + (header == null ? 0 : MessageHeader.SIZE);
+            try {
+                mcap.endMessage();
+            } finally {
+                settle();
+            }
         }
         wireCount++;
     }
@@ -192,7 +206,11 @@ public final class SpyLogWriter implements AutoCloseable {
         if (ownChannels.contains(channel)) {
             throw new IllegalArgumentException("channel " + channel + " was not added with addChannel");
         }
-        mcap.message(channel, logTime(timeNanos), timeNanos, data);
+        try {
+            mcap.message(channel, logTime(timeNanos), timeNanos, data);
+        } finally {
+            settle();
+        }
     }
 
     /**
@@ -217,13 +235,31 @@ public final class SpyLogWriter implements AutoCloseable {
                 WireProto.string(b, 6, e.text());
             }
             WireProto.bytes(b, 7, e.bytesUnsafe(), 0, e.length());
-            mcap.endMessage();
+            try {
+                mcap.endMessage();
+            } finally {
+                settle();
+            }
         }
     }
 
     /** Wire messages written (banners, Player messages, unframed pieces); events are not counted. */
     public synchronized long messagesWritten() {
         return wireCount;
+    }
+
+    /**
+     * Wire messages in the file so far: in chunks written completely, so that a reader (or its
+     * recovery, after a crash or a full disk) reads them. Not those of the open chunk, nor of a chunk
+     * whose write failed (cut back from a file).
+     */
+    public synchronized long messagesLogged() {
+        return loggedWire;
+    }
+
+    /** The wire bytes (banners, Player messages with their headers, unframed pieces) of {@link #messagesLogged()}. */
+    public synchronized long wireBytesLogged() {
+        return loggedWireBytes;
     }
 
     /** Bytes in the file so far (the open chunk is not there yet). */
@@ -233,7 +269,11 @@ public final class SpyLogWriter implements AutoCloseable {
 
     /** Writes the open chunk, so that everything logged so far is in the file ({@link #force()}: on the disk). */
     public synchronized void flush() throws IOException {
-        mcap.flush();
+        try {
+            mcap.flush();
+        } finally {
+            settle();
+        }
     }
 
     /** Forces what was written to the disk; not synchronized with writing (see {@link McapWriter#force()}). */
@@ -244,7 +284,17 @@ public final class SpyLogWriter implements AutoCloseable {
     /** Writes the open chunk, the summary and the footer, and closes the file. */
     @Override
     public synchronized void close() throws IOException {
-        mcap.close();
+        try {
+            mcap.flush(); // the open chunk, counted before the summary is written
+            settle();
+        } catch (IOException e) {
+            // the writer has failed (now, or before): close says so, and closes the file
+        }
+        try {
+            mcap.close();
+        } finally {
+            settle();
+        }
     }
 
     // --- messages --------------------------------------------------------------------------------
@@ -256,7 +306,27 @@ public final class SpyLogWriter implements AutoCloseable {
     }
 
     private void event(long timeNanos, byte[] json) throws IOException {
-        mcap.message(eventChannel, logTime(timeNanos), timeNanos, json);
+        try {
+            mcap.message(eventChannel, logTime(timeNanos), timeNanos, json);
+        } finally {
+            settle();
+        }
+    }
+
+    /**
+     * After every call that may have written a chunk: the file grows only by whole chunks (and the
+     * definitions and message indexes written with them), so when it grew, the open chunk's wire
+     * messages are in it. A chunk whose write failed is cut back (or left incomplete) and not counted.
+     */
+    private void settle() {
+        long at = mcap.bytesWritten();
+        if (at != settledAt) {
+            settledAt = at;
+            loggedWire += openWire;
+            loggedWireBytes += openWireBytes;
+            openWire = 0;
+            openWireBytes = 0;
+        }
     }
 
     private int wireChannel(int conn, int port, Direction dir) throws IOException {

@@ -85,6 +85,12 @@ public final class LogRecorder implements SpyRecorder {
         return writer;
     }
 
+    /** The wire messages in the file's complete chunks: what a reader gets back, also after a crash or a full disk. */
+    @Override
+    public Logged logged() {
+        return new Logged(writer.messagesLogged(), writer.wireBytesLogged());
+    }
+
     @Override
     public void opened(ConnectionInfo c, long timeNanos) throws IOException {
         add(w -> w.connectionOpened(timeNanos, c.id(), c.client(), c.listen(), c.upstream()), SMALL_ENTRY);

@@ -208,7 +208,19 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
 
     // owned by the worker thread
     private @Nullable SpyRecorder recorder;
+    /** The recorder as given, also after it stopped: it says what reached the log ({@link SpyRecorder#logged()}). */
+    private final @Nullable SpyRecorder log;
+    /** Why the log stopped, or null. */
     private volatile @Nullable String recorderError;
+    private final long startNanos = System.nanoTime();
+    /** When the log stopped, on {@link System#nanoTime()}'s scale. */
+    private volatile long recorderStoppedNanos;
+    /** Wire events framed by observation (banners, Player messages, unframed pieces) and their bytes. */
+    private final LongAdder framedMessages = new LongAdder();
+    private final LongAdder framedBytes = new LongAdder();
+    /** The same, since the log stopped: what is not in it when the recorder cannot say what is. */
+    private final LongAdder framedMessagesAfterStop = new LongAdder();
+    private final LongAdder framedBytesAfterStop = new LongAdder();
     private long lastFlushNanos = System.nanoTime();
     private final Set<ConnectionInfo> openConnections = new LinkedHashSet<>();
     /** What this round publishes, in order; handed to the bus at the end of the round, every 256 items, before a release. */
@@ -224,6 +236,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         this.bus = bus;
         this.decoder = decoder;
         this.recorder = recorder;
+        this.log = recorder;
         this.maxQueuedBytes = maxQueuedBytes;
         this.maxHeldBytes = maxQueuedBytes / 2;
         this.flowBytes = Math.min(FLOW_BYTES, maxQueuedBytes / 2);
@@ -671,9 +684,47 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         return firstFailure;
     }
 
-    /** Why the spy log stopped, or null while it is fine (or there is none). */
+    /**
+     * Why the spy log stopped, when, and what was relayed but is not in the log, or null while it is
+     * fine (or there is none): e.g. "spy log stopped at 12.3 s: No space left on device; 5120
+     * messages (3.1 MB) relayed are not in the log". The time is since observation started; the
+     * messages are wire events as observation framed them (banners, Player messages, unframed
+     * pieces) with their wire bytes; bytes observation did not see ({@link #droppedBytes()}) are not
+     * in the log either and counted apart. Final once the pipeline is closed (what was still on its
+     * way to the log counts too).
+     */
     public @Nullable String recorderError() {
-        return recorderError;
+        String why = recorderError;
+        if (why == null) {
+            return null;
+        }
+        long messages;
+        long bytes;
+        SpyRecorder.Logged in = null;
+        try {
+            SpyRecorder l = log;
+            in = l == null ? null : l.logged();
+        } catch (RuntimeException e) {
+            // cannot tell: what came after the stop is counted instead
+        }
+        if (in != null) {
+            messages = framedMessages.sum() - in.messages();
+            bytes = framedBytes.sum() - in.bytes();
+        } else {
+            messages = framedMessagesAfterStop.sum();
+            bytes = framedBytesAfterStop.sum();
+        }
+        return String.format(Locale.ROOT, "spy log stopped at %.1f s: %s; %d messages (%s) relayed %sare not in the log",
+                (recorderStoppedNanos - startNanos) / 1e9, why, Math.max(0, messages), amount(Math.max(0, bytes)),
+                in != null ? "" : "after that ");
+    }
+
+    private static String amount(long bytes) {
+        if (bytes < 10_000) {
+            return bytes + " bytes";
+        }
+        return bytes < 1_000_000 ? String.format(Locale.ROOT, "%.1f kB", bytes / 1e3)
+                : String.format(Locale.ROOT, "%.1f MB", bytes / 1e6);
     }
 
     /** Bytes observation holds right now (queued events and unfinished messages). */
@@ -899,8 +950,13 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     }
 
     private void event(ConnectionInfo c, Direction dir, WireEvent e, DecodedMessage m, long t) {
+        framedMessages.increment();
+        framedBytes.add(size(e));
         if (recorder != null) {
             record(r -> r.wire(c, dir, e, t));
+        } else if (recorderError != null) {
+            framedMessagesAfterStop.increment();
+            framedBytesAfterStop.add(size(e));
         }
         switch (e) {
             case WireEvent.Banner b -> {
@@ -963,7 +1019,8 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         try {
             call.apply(recorder);
         } catch (Throwable e) {
-            recorderError = "spy log stopped: " + (e instanceof IOException ? String.valueOf(e.getMessage()) : describe(e));
+            recorderStoppedNanos = System.nanoTime();
+            recorderError = e instanceof IOException ? String.valueOf(e.getMessage()) : describe(e);
             try {
                 recorder.close();
             } catch (Throwable ignored) {
@@ -985,7 +1042,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
             record(call);
         } catch (Throwable e) {
             internalErrors.increment();
-            report(SPY, String.valueOf(recorderError)); // set by record() before it throws
+            report(SPY, String.valueOf(recorderError())); // set by record() before it throws
         }
     }
 }

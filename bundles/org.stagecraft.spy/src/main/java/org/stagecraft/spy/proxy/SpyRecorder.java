@@ -2,6 +2,7 @@ package org.stagecraft.spy.proxy;
 
 import java.io.IOException;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.spy.log.HoldEntry;
@@ -26,6 +27,18 @@ public interface SpyRecorder extends AutoCloseable {
 
     /** Makes what was recorded so far durable (called about once a second). */
     void flush() throws IOException;
+
+    /** Wire messages and their wire bytes that reached the log file so far. */
+    record Logged(long messages, long bytes) {
+    }
+
+    /**
+     * What is in the log file so far ({@link Logged}), for saying what was relayed but not logged when
+     * the log stopped early; null when this recorder cannot tell.
+     */
+    default @Nullable Logged logged() {
+        return null;
+    }
 
     @Override
     void close() throws IOException;

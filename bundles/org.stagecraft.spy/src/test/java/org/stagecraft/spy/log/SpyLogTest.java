@@ -11,7 +11,6 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
-import java.nio.channels.WritableByteChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,7 +29,8 @@ import org.stagecraft.mcap.Mcap;
 import org.stagecraft.player.session.SessionEvent;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.WireEvent;
-import org.stagecraft.spy.ForwardingFileChannel;
+import org.stagecraft.spy.FillingChannel;
+import org.stagecraft.spy.FillingFile;
 
 class SpyLogTest {
     /** Footer record (opcode, length, 20 bytes) and the closing magic. */
@@ -423,40 +423,6 @@ class SpyLogTest {
         }
     }
 
-    /** A channel that accepts {@code budget} bytes and then fails like a full disk (after a partial write). */
-    private static final class FillingChannel implements WritableByteChannel {
-        private final FileChannel file;
-        private long budget;
-
-        FillingChannel(FileChannel file, long budget) {
-            this.file = file;
-            this.budget = budget;
-        }
-
-        @Override
-        public int write(ByteBuffer src) throws IOException {
-            if (budget <= 0) {
-                throw new IOException("No space left on device");
-            }
-            int n = (int) Math.min(budget, src.remaining());
-            ByteBuffer part = src.slice().limit(n);
-            int written = file.write(part);
-            src.position(src.position() + written);
-            budget -= written;
-            return written;
-        }
-
-        @Override
-        public boolean isOpen() {
-            return file.isOpen();
-        }
-
-        @Override
-        public void close() throws IOException {
-            file.close();
-        }
-    }
-
     @Test
     void aFullDiskFailsTheWriterAndLeavesTheLogValidUpToTheLastCompleteChunk() throws IOException {
         Path log = tmp.resolve("full-disk.mcap");
@@ -504,21 +470,6 @@ class SpyLogTest {
                 assertArrayEquals(written.get(i), got.get(i).bytes());
                 assertEquals("garbage " + i, got.get(i).reason());
             }
-        }
-    }
-
-    /** The same, as the file channel the writer gets for a path: the writer can cut the file back. */
-    private static final class FillingFile extends ForwardingFileChannel {
-        private final FillingChannel filling;
-
-        FillingFile(FileChannel file, long budget) {
-            super(file);
-            this.filling = new FillingChannel(file, budget);
-        }
-
-        @Override
-        public int write(ByteBuffer src) throws IOException {
-            return filling.write(src);
         }
     }
 

@@ -1,0 +1,143 @@
+package org.stagecraft.spy.proxy;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.channels.FileChannel;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.Iterator;
+import java.util.Locale;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.AutoClose;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.player.wire.Direction;
+import org.stagecraft.player.wire.PlayerFramer;
+import org.stagecraft.recording.trace.TraceCorpus;
+import org.stagecraft.recording.trace.TraceReader;
+import org.stagecraft.recording.trace.TraceRecord;
+import org.stagecraft.spy.Cleanup;
+import org.stagecraft.spy.FillingFile;
+import org.stagecraft.spy.log.LogEntry;
+import org.stagecraft.spy.log.SpyLogReader;
+import org.stagecraft.spy.log.SpyLogWriter;
+import org.stagecraft.streams.StreamBus;
+
+/**
+ * Issue 25, items 4 and 5: when the log stops early the spy says what was relayed but is not in the
+ * log, and what was relayed reaches the log file soon, not only at the next once-a-second flush.
+ */
+@Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class LogCrashWindowTest {
+    private static final PlayerDecoder DECODER = new PlayerDecoder(CodecRegistry.standard());
+    private static final ConnectionInfo CONN = new ConnectionInfo(1, 6665, "127.0.0.1:40000", "127.0.0.1:6665",
+            "127.0.0.1:7665");
+
+    @AutoClose
+    private final Cleanup cleanup = new Cleanup();
+    @TempDir
+    Path dir;
+
+    /** The two byte streams of a one-connection recording. */
+    private static byte[][] streams(String trace) throws IOException {
+        ByteArrayOutputStream c2s = new ByteArrayOutputStream();
+        ByteArrayOutputStream s2c = new ByteArrayOutputStream();
+        try (TraceReader r = new TraceReader(TraceCorpus.file(trace))) {
+            for (TraceRecord rec = r.next(); rec != null; rec = r.next()) {
+                if (rec instanceof TraceRecord.Chunk c && c.stream().conn() == 1) {
+                    (c.stream().dir() == Direction.CLIENT_TO_SERVER ? c2s : s2c).writeBytes(c.data());
+                }
+            }
+        }
+        return new byte[][] {c2s.toByteArray(), s2c.toByteArray()};
+    }
+
+    /** Wire events (banner, Player messages, unframed pieces) of a whole stream, and their bytes. */
+    private static long[] events(byte[] stream, Direction dir) {
+        return events(stream, stream.length, dir, true);
+    }
+
+    private static long[] events(byte[] stream, int length, Direction dir, boolean end) {
+        long[] n = new long[2];
+        PlayerFramer f = new PlayerFramer(dir, e -> {
+            n[0]++;
+            n[1] += e.bytes().length;
+        });
+        f.accept(stream, 0, length);
+        if (end) {
+            f.end();
+        }
+        return n;
+    }
+
+    /** Wire messages in a log (recovered when it was not closed) and their bytes. */
+    private static long[] logged(Path file) throws IOException {
+        long[] n = new long[2];
+        try (SpyLogReader r = SpyLogReader.open(file)) {
+            for (Iterator<LogEntry> it = r.entries(); it.hasNext();) {
+                if (it.next() instanceof LogEntry.Wire w) {
+                    n[0]++;
+                    n[1] += w.bytes().length;
+                }
+            }
+        }
+        return n;
+    }
+
+    @Test
+    void aFullDiskSaysHowManyRelayedMessagesAndBytesAreNotInTheLog() throws Exception {
+        byte[][] rec = streams("pioneer-laser-sonar.gt.trace.jsonl");
+        Path file = dir.resolve("full.mcap");
+        // a disk that fills after 40 kB: a few small chunks reach the file, then writing fails
+        FillingFile disk = new FillingFile(FileChannel.open(file, StandardOpenOption.CREATE, StandardOpenOption.WRITE,
+                StandardOpenOption.READ, StandardOpenOption.TRUNCATE_EXISTING), 40_000);
+        ObservationPipeline pipeline = new ObservationPipeline(new StreamBus(), DECODER,
+                new LogRecorder(SpyLogWriter.create(disk, Map.of(), 8 << 10)), 64 << 20);
+        cleanup.add(pipeline);
+        long t = 1_000;
+        pipeline.opened(CONN, t);
+        int piece = 1500;
+        for (int at = 0; at < Math.max(rec[0].length, rec[1].length); at += piece) {
+            for (Direction d : Direction.values()) {
+                byte[] s = rec[d == Direction.CLIENT_TO_SERVER ? 0 : 1];
+                if (at < s.length) {
+                    pipeline.chunk(CONN, d, s, at, Math.min(piece, s.length - at), t++);
+                }
+            }
+        }
+        pipeline.closed(CONN, t, "done");
+        pipeline.close();
+
+        long[] c2s = events(rec[0], Direction.CLIENT_TO_SERVER);
+        long[] s2c = events(rec[1], Direction.SERVER_TO_CLIENT);
+        long relayedMessages = c2s[0] + s2c[0];
+        long relayedBytes = c2s[1] + s2c[1];
+        assertEquals(rec[0].length + rec[1].length, relayedBytes, "the framer is lossless");
+        long[] inLog = logged(file);
+        assertTrue(inLog[0] > 0 && inLog[0] < relayedMessages, "the disk filled in the middle: " + inLog[0] + " of "
+                + relayedMessages + " messages logged");
+
+        String said = pipeline.recorderError();
+        assertNotNull(said, "the log stopped");
+        Matcher m = Pattern.compile("^spy log stopped at (\\d+\\.\\d) s: No space left on device(?:.*); (\\d+) messages"
+                + " \\(([^)]+)\\) relayed are not in the log$").matcher(said);
+        assertTrue(m.matches(), "says when, why and what is not in the log: " + said);
+        assertEquals(relayedMessages - inLog[0], Long.parseLong(m.group(2)),
+                "relayed messages not in the log, exactly: " + said);
+        long missing = relayedBytes - inLog[1];
+        String bytes = missing < 1_000_000 ? String.format(Locale.ROOT, "%.1f kB", missing / 1e3)
+                : String.format(Locale.ROOT, "%.1f MB", missing / 1e6);
+        assertEquals(bytes, m.group(3), "their wire bytes (" + missing + "): " + said);
+        assertEquals(0, pipeline.droppedBytes(), "everything was observed; only the log is short");
+    }
+}
