@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
@@ -43,6 +44,8 @@ public final class LogRecorder implements SpyRecorder {
     static final int BATCH_ENTRIES = 512;
     static final int BATCH_BYTES = 256 << 10;
     static final long MAX_QUEUED_BYTES = 4L << 20;
+    /** The file is forced to the disk at a flush at most this often. */
+    static final long FORCE_INTERVAL_MILLIS = 1000;
     /** What an entry other than wire bytes costs in the budget (an estimate: they are small). */
     private static final int SMALL_ENTRY = 128;
 
@@ -75,6 +78,8 @@ public final class LogRecorder implements SpyRecorder {
     private final AtomicBoolean forcing = new AtomicBoolean();
     /** A failed force, for the log thread to act on (it alone closes the writer). */
     private volatile @Nullable Throwable forceFailure;
+    /** When the log thread last had the file forced (the first flush forces it). */
+    private long lastForceNanos = System.nanoTime() - TimeUnit.MILLISECONDS.toNanos(FORCE_INTERVAL_MILLIS);
 
     public LogRecorder(SpyLogWriter writer) {
         this.writer = writer;
@@ -119,13 +124,20 @@ public final class LogRecorder implements SpyRecorder {
 
     /**
      * Hands everything so far to the log thread, which writes the open chunk (so a killed process
-     * loses nothing before it) and has the file forced to the disk beside it ({@link #forceAside()}).
+     * loses nothing before it) and, when the last force is {@value #FORCE_INTERVAL_MILLIS} ms old or
+     * more, has the file forced to the disk beside it ({@link #forceAside()}): the observation pipeline
+     * flushes every few tens of milliseconds while there is traffic (the crash window), and an fsync
+     * that often would cost the disk, not the process, what it saves.
      */
     @Override
     public void flush() throws IOException {
         add(w -> {
             w.flush();
-            forceAside();
+            long now = System.nanoTime();
+            if (now - lastForceNanos >= TimeUnit.MILLISECONDS.toNanos(FORCE_INTERVAL_MILLIS)) {
+                lastForceNanos = now;
+                forceAside();
+            }
         }, 0);
         handOver(false);
     }

@@ -169,10 +169,21 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
      * more young collections.
      */
     static final long FLOW_BYTES = 1L << 20;
+    /** How long a forwarded chunk waits for room within the flow limit before it is taken past it ({@link #take}). */
+    static final long OVERDUE_NANOS = TimeUnit.MILLISECONDS.toNanos(50);
     /** How long the observation thread sleeps between rounds when nothing wakes it. */
     static final long TICK_MILLIS = 50;
     /** Queued bytes that wake the observation thread before its tick. */
     static final long WAKE_BYTES = 256 << 10;
+    /**
+     * How often the recorder is flushed while there is something new in it: what observation has
+     * recorded reaches the log file (where a killed process leaves it) within this, plus up to a
+     * {@linkplain #TICK_MILLIS tick} before observation takes it up. Shorter than a tick, so that every
+     * round of a steady flow ends with a flush.
+     */
+    static final long LOG_WRITE_NANOS = TimeUnit.MILLISECONDS.toNanos(TICK_MILLIS - 10);
+    /** How often the recorder is flushed when nothing new was recorded (it forces the file to the disk). */
+    static final long LOG_FLUSH_NANOS = TimeUnit.SECONDS.toNanos(1);
 
     private final ConcurrentLinkedQueue<Item> queue = new ConcurrentLinkedQueue<>();
     /** The observation thread is between rounds (parked until its tick or a wake-up). */
@@ -222,6 +233,8 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     private final LongAdder framedMessagesAfterStop = new LongAdder();
     private final LongAdder framedBytesAfterStop = new LongAdder();
     private long lastFlushNanos = System.nanoTime();
+    /** Something was recorded since the last flush. */
+    private boolean recordedSinceFlush;
     private final Set<ConnectionInfo> openConnections = new LinkedHashSet<>();
     /** What this round publishes, in order; handed to the bus at the end of the round, every 256 items, before a release. */
     private final List<StreamMessage> outbox = new ArrayList<>(512);
@@ -400,12 +413,14 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         roomLock.lock();
         try {
             wake();
+            long before = progress;
             while (!closing && dead == null && !stalled) {
-                if (take(inflow, n)) {
-                    return n;
-                }
                 long now = System.nanoTime();
                 long p = observedProgress.get();
+                // overdue only while observation moves: a stuck one gets no more than the flow limit
+                if (take(inflow, n, now - start >= OVERDUE_NANOS && p != before)) {
+                    return n;
+                }
                 if (p != progress) {
                     progress = p;
                     lastMove = now;
@@ -442,8 +457,20 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
      * best-effort observation and a stalled one, where {@link #admit} decides.
      */
     private boolean take(Inflow inflow, long n) {
+        return take(inflow, n, false);
+    }
+
+    /**
+     * As {@link #take(Inflow, long)}; {@code overdue}: the chunk has waited {@link #OVERDUE_NANOS}
+     * already while observation made progress, and is taken past the flow limit, up to twice it.
+     * Waiting forwarders race for the room observation makes, with each other and with those that
+     * read next: without this, a chunk could wait far longer, relayed and not yet observed, which is
+     * what a crash then takes from the log (docs/spy-log.md). A forwarding thread holds one chunk, so
+     * the overdue ones (a chunk each) fit in the second flow limit unless there are many connections.
+     */
+    private boolean take(Inflow inflow, long n, boolean overdue) {
         long total = queuedBytes.addAndGet(n);
-        if (total == n || total <= flowBytes && total + heldBytes.get() <= maxQueuedBytes) {
+        if (total == n || total <= (overdue ? 2 * flowBytes : flowBytes) && total + heldBytes.get() <= maxQueuedBytes) {
             inflow.queued.addAndGet(n);
             return true; // an empty queue always takes one chunk, whatever its size
         }
@@ -813,19 +840,30 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 if (++n % 256 == 0) {
                     sendOutbox();
                     signalRoom();
+                    flushInTime(); // a round that never runs dry still writes the log in time
                 }
             }
             sendOutbox();
             signalRoom();
-            if (System.nanoTime() - lastFlushNanos > 1_000_000_000L) {
-                lastFlushNanos = System.nanoTime();
-                recordQuietly(r -> r.flush());
-            }
+            flushInTime();
             idle = true;
             if (queue.isEmpty()) { // a producer that saw idle == false queued before this check
                 LockSupport.parkNanos(this, TimeUnit.MILLISECONDS.toNanos(TICK_MILLIS));
             }
             idle = false;
+        }
+    }
+
+    /**
+     * Flushes the recorder when what it was given last is {@link #LOG_WRITE_NANOS} old, and at
+     * least every {@link #LOG_FLUSH_NANOS}: the crash window of the log (docs/spy-log.md).
+     */
+    private void flushInTime() {
+        long now = System.nanoTime();
+        if (now - lastFlushNanos >= (recordedSinceFlush ? LOG_WRITE_NANOS : LOG_FLUSH_NANOS)) {
+            lastFlushNanos = now;
+            recordedSinceFlush = false;
+            recordQuietly(r -> r.flush());
         }
     }
 
@@ -1018,6 +1056,7 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         }
         try {
             call.apply(recorder);
+            recordedSinceFlush = true;
         } catch (Throwable e) {
             recorderStoppedNanos = System.nanoTime();
             recorderError = e instanceof IOException ? String.valueOf(e.getMessage()) : describe(e);

@@ -25,7 +25,11 @@ public interface SpyRecorder extends AutoCloseable {
     default void hold(HoldEntry entry) throws IOException {
     }
 
-    /** Makes what was recorded so far durable (called about once a second). */
+    /**
+     * Puts what was recorded so far into the log file, so that it survives the process being killed
+     * (called every few tens of milliseconds while there is traffic, and at least once a second); a
+     * recorder forces the file to the disk at most about once a second.
+     */
     void flush() throws IOException;
 
     /** Wire messages and their wire bytes that reached the log file so far. */
