@@ -261,7 +261,7 @@ public final class SessionParts implements ToolListener {
                         + s.pipeline().droppedBytes() + " bytes unobserved"
                         + s.pipeline().waitingSummary("; ")
                         + (s.pipeline().internalErrors() > 0 ? "; " + s.pipeline().internalErrors() + " observation failures" : "")
-                        + (s.pipeline().recorderError() != null ? "; log error: " + s.pipeline().recorderError() : ""));
+                        + (s.pipeline().recorderError() != null ? "; " + s.pipeline().recorderError() : ""));
                 ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.STOPPED, -1, 0, null,
                         s.spy().totalConnections() + " connections relayed"));
             }
