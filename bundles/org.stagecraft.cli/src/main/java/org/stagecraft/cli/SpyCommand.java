@@ -58,7 +58,14 @@ final class SpyCommand {
             Duration observationWait) {
     }
 
+    /** Opens the spy log's writer (for tests: one on a disk that fills up). */
+    @FunctionalInterface
+    interface LogOpener {
+        SpyLogWriter open(Path file, Map<String, String> metadata) throws IOException;
+    }
+
     private final Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter;
+    private final LogOpener logOpener;
 
     SpyCommand() {
         this(FOXGLOVE_SCENE);
@@ -66,7 +73,13 @@ final class SpyCommand {
 
     /** For tests: another converter for the live view. */
     SpyCommand(Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter) {
+        this(liveConverter, SpyLogWriter::create);
+    }
+
+    /** For tests: another converter for the live view, another way to open the log. */
+    SpyCommand(Function<FoxgloveSink, Consumer<StreamMessage>> liveConverter, LogOpener logOpener) {
         this.liveConverter = liveConverter;
+        this.logOpener = logOpener;
     }
 
     int run(String[] args, PrintStream out, PrintStream err) {
@@ -151,7 +164,7 @@ final class SpyCommand {
                 Map<String, String> meta = new LinkedHashMap<>();
                 meta.put("tool", "stagecraft spy");
                 meta.put("routes", o.routes().toString());
-                recorder = new LogRecorder(SpyLogWriter.create(log, meta));
+                recorder = new LogRecorder(logOpener.open(log, meta));
             } catch (IOException e) {
                 err.println("stagecraft spy: cannot write the log " + log + ": " + LogFileProblem.reason(log, e));
                 spy.close();

@@ -12,11 +12,17 @@ import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
+import java.nio.channels.WritableByteChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.time.Duration;
+import java.util.Iterator;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -29,10 +35,13 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.player.wire.PlayerFramer;
 import org.stagecraft.recording.peers.RecordedConnection;
 import org.stagecraft.recording.peers.ReplayPeer;
 import org.stagecraft.recording.trace.TraceCorpus;
+import org.stagecraft.spy.log.LogEntry;
 import org.stagecraft.spy.log.SpyLogReader;
+import org.stagecraft.spy.log.SpyLogWriter;
 
 /** {@code stagecraft spy}: options, the relay with its log, the summary lines, a clean stop. */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
@@ -96,6 +105,97 @@ class SpyCommandTest {
             assertArrayEquals(rc.clientBytes(), r.streamBytes(1, Direction.CLIENT_TO_SERVER));
             assertArrayEquals(rc.serverBytes(), r.streamBytes(1, Direction.SERVER_TO_CLIENT));
         }
+    }
+
+    /** A disk with room for {@code budget} bytes: a write that does not fit fails whole, like a full disk. */
+    private static final class FullDisk implements WritableByteChannel {
+        private final FileChannel file;
+        private long budget;
+
+        FullDisk(FileChannel file, long budget) {
+            this.file = file;
+            this.budget = budget;
+        }
+
+        @Override
+        public int write(ByteBuffer src) throws IOException {
+            if (src.remaining() > budget) {
+                budget = 0;
+                throw new IOException("No space left on device");
+            }
+            int n = file.write(src);
+            budget -= n;
+            return n;
+        }
+
+        @Override
+        public boolean isOpen() {
+            return file.isOpen();
+        }
+
+        @Override
+        public void close() throws IOException {
+            file.close();
+        }
+    }
+
+    @Test
+    void aFullDiskStopsTheLogAndTheFinalLineSaysWhatWasRelayedButIsNotInIt() throws Exception {
+        RecordedConnection rc = RecordedConnection.read(TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl")).get(0);
+        Path log = tmp.resolve("full.mcap");
+        Lines err = new Lines();
+        CountDownLatch stop = new CountDownLatch(1);
+        // 8 KiB chunks on a disk with room for 30 kB: the disk fills in the middle of the session
+        SpyCommand.LogOpener smallDisk = (file, meta) -> SpyLogWriter.create(new FullDisk(FileChannel.open(file,
+                StandardOpenOption.CREATE, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING), 30_000), meta,
+                8 << 10);
+        try (ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();
+                ServerSocket player = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
+            Future<ReplayPeer.Result> served = threads.submit(() -> ReplayPeer.serve(player.accept(), rc));
+            SpyCommand.Options o = SpyCommand.parse(new String[] {"--listen", "0", "--to", "127.0.0.1:" + player.getLocalPort(),
+                    "--log", log.toString()});
+            Future<Integer> spy = threads.submit(() -> new SpyCommand(SpyCommand.FOXGLOVE_SCENE, smallDisk).serve(o,
+                    new PrintStream(err, true, StandardCharsets.UTF_8), stop, false));
+            int port = Integer.parseInt(err.await(Pattern.compile("spying 127\\.0\\.0\\.1:(\\d+) -> "), 20_000));
+            ReplayPeer.Result program = ReplayPeer.client(new Socket(InetAddress.getLoopbackAddress(), port), rc);
+            assertTrue(program.matches(), "the wire stays exact: the program's bytes differ at " + program.firstDifference());
+            assertTrue(served.get(20, TimeUnit.SECONDS).matches(), "the wire stays exact on Player's side");
+            err.await(Pattern.compile("connections 0 open/(1) "), 20_000);
+            stop.countDown();
+            assertEquals(0, spy.get(20, TimeUnit.SECONDS));
+        }
+        long relayed = 0;
+        long relayedBytes = 0;
+        for (Direction d : Direction.values()) {
+            long[] n = new long[2];
+            PlayerFramer f = new PlayerFramer(d, e -> {
+                n[0]++;
+                n[1] += e.bytes().length;
+            });
+            f.accept(d == Direction.CLIENT_TO_SERVER ? rc.clientBytes() : rc.serverBytes());
+            f.end();
+            relayed += n[0];
+            relayedBytes += n[1];
+        }
+        long logged = 0;
+        long loggedBytes = 0;
+        try (SpyLogReader r = SpyLogReader.open(log)) {
+            for (Iterator<LogEntry> it = r.entries(); it.hasNext();) {
+                if (it.next() instanceof LogEntry.Wire w) {
+                    logged++;
+                    loggedBytes += w.bytes().length;
+                }
+            }
+        }
+        assertTrue(logged > 0 && logged < relayed, "the disk filled in the middle: " + logged + " of " + relayed);
+        String last = err.text().lines().filter(l -> l.startsWith("stopped: ")).findFirst().orElse("");
+        Matcher m = Pattern.compile("; spy log stopped at \\d+\\.\\d s: No space left on device; (\\d+) messages \\(([^)]+)\\)"
+                + " relayed are not in the log$").matcher(last);
+        assertTrue(m.find(), "the final line says when, why and what is not in the log: " + last);
+        assertEquals(relayed - logged, Long.parseLong(m.group(1)), last);
+        long missing = relayedBytes - loggedBytes;
+        assertEquals(missing < 1_000_000 ? String.format(Locale.ROOT, "%.1f kB", missing / 1e3)
+                : String.format(Locale.ROOT, "%.1f MB", missing / 1e6), m.group(2), missing + " bytes: " + last);
     }
 
     @Test
