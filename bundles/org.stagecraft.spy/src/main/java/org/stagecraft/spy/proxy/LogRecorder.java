@@ -27,9 +27,9 @@ import org.stagecraft.spy.log.SpyLogWriter;
  * keeps log times non-decreasing as before.
  *
  * <p>Hand-over: calls are gathered in batches of up to {@value #BATCH_ENTRIES} entries or
- * {@value #BATCH_BYTES} bytes, handed over when full and at every {@link #flush()} (about once a
- * second) and {@link #close()}; holding a few entries back changes nothing in the file, where they
- * would wait in the open chunk anyway. Memory: batches waiting for the log thread hold at most
+ * {@value #BATCH_BYTES} bytes, handed over when full and at every {@link #flush()} (every few tens
+ * of milliseconds while there is traffic) and {@link #close()}; the flush has the log thread write
+ * the open chunk, so what was handed over is in the file then. Memory: batches waiting for the log thread hold at most
  * {@value #MAX_QUEUED_BYTES} bytes of entries (one larger message is always taken); past that the
  * observation thread waits, so its own queue fills and the forwarding threads wait for room while it
  * makes progress, or, once it has made none for the pipeline's wait limit (a hung disk), count what
