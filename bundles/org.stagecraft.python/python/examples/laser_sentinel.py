@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from dataclasses import dataclass
 
 from stagecraft_player import Client, LaserScan, PlayerError, RequestRefused, deg, m, s, to_si
@@ -59,7 +60,9 @@ def turn_rate(target: Target | None) -> float:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    # the module's docstring read through sys.modules: PyDev's code analysis does not know a module's
+    # own __doc__ and marks the bare name as an undefined variable
+    parser = argparse.ArgumentParser(description=str(sys.modules[__name__].__doc__).splitlines()[0])
     parser.add_argument("--host", default="localhost")
     parser.add_argument("--port", type=int, default=6665)
     parser.add_argument("--position", default="position2d:0", help="the robot base (default position2d:0)")

@@ -17,6 +17,7 @@ import argparse
 import enum
 import math
 import random
+import sys
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -107,7 +108,9 @@ def sonar_readings(device: Ranger | Sonar) -> list[Reading]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    # the module's docstring read through sys.modules: PyDev's code analysis does not know a module's
+    # own __doc__ and marks the bare name as an undefined variable
+    parser = argparse.ArgumentParser(description=str(sys.modules[__name__].__doc__).splitlines()[0])
     parser.add_argument("--host", default="localhost")
     parser.add_argument("--port", type=int, default=6665)
     parser.add_argument("--position", default="position2d:0", help="the robot base (default position2d:0)")

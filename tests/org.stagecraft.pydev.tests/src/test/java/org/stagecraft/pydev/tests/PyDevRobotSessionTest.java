@@ -27,7 +27,6 @@ import org.eclipse.core.resources.IProject;
 import org.eclipse.core.resources.IResource;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.NullProgressMonitor;
-import org.eclipse.core.runtime.preferences.IEclipsePreferences;
 import org.eclipse.core.runtime.preferences.InstanceScope;
 import org.eclipse.debug.core.DebugEvent;
 import org.eclipse.debug.core.DebugPlugin;
@@ -49,19 +48,13 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.python.pydev.ast.interpreter_managers.InterpreterInfo;
 import org.python.pydev.ast.interpreter_managers.InterpreterManagersAPI;
-import org.python.pydev.ast.interpreter_managers.PythonInterpreterManager;
-import org.python.pydev.core.IInterpreterInfo;
-import org.python.pydev.core.IInterpreterManager;
 import org.python.pydev.debug.core.Constants;
 import org.python.pydev.debug.model.PyBreakpoint;
 import org.python.pydev.debug.ui.actions.PyBreakpointRulerAction;
 import org.python.pydev.debug.ui.launching.RegularLaunchConfigurationDelegate;
 import org.python.pydev.editor.PyEdit;
 import org.python.pydev.plugin.nature.PythonNature;
-import org.python.pydev.plugin.preferences.PydevRootPrefs;
-import org.python.pydev.shared_core.structure.Tuple;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.ui.launch.LaunchAttributes;
 import org.stagecraft.tools.ui.launch.PythonClientPath;
@@ -87,28 +80,8 @@ class PyDevRobotSessionTest {
 
     @BeforeAll
     static void pyDevWithPython3() throws Exception {
-        IEclipsePreferences pydevPrefs = InstanceScope.INSTANCE.getNode("org.python.pydev");
-        // no "preferred settings" dialog when PyDev's editor opens
-        pydevPrefs.putBoolean(PydevRootPrefs.CHECK_PREFERRED_PYDEV_SETTINGS, false);
-        pydevPrefs.flush();
-        python = onPath("python3");
-        Tuple<InterpreterInfo, String> created = PythonInterpreterManager.doCreateInterpreterInfo(python,
-                new NullProgressMonitor(), false);
-        assertNotNull(created, "PyDev made no interpreter info for " + python);
-        assertTrue(created.o2.contains("<xml>"), "PyDev's interpreterInfo.py printed its XML: " + created.o2);
-        IInterpreterManager manager = InterpreterManagersAPI.getPythonInterpreterManager();
-        manager.setInfos(new IInterpreterInfo[] {created.o1}, Set.of(created.o1.getExecutableOrJar()), new NullProgressMonitor());
-        assertTrue(manager.isConfigured(), "PyDev has a default interpreter");
-    }
-
-    private static String onPath(String name) {
-        for (String dir : System.getenv().getOrDefault("PATH", "/usr/bin").split(File.pathSeparator)) {
-            Path p = Path.of(dir, name);
-            if (Files.isExecutable(p)) {
-                return p.toString();
-            }
-        }
-        throw new AssertionError(name + " is not on PATH: the PyDev tier needs it");
+        python = PyDevInterpreter.onPath("python3");
+        PyDevInterpreter.configure(python);
     }
 
     @BeforeEach
