@@ -218,7 +218,12 @@ class RobotSessionLaunchTest {
         assertTrue(poseOnWorkbenchBus.await(30, TimeUnit.SECONDS), "position2d data of the session on the workbench bus");
         workbench.close();
 
-        // the Tools view shows the parts and their states
+        // the Tools view shows the parts and their states; the program's row follows its process's end,
+        // which the debug platform announces on a thread of its own
+        Await.until("the program's row says it exited", WAIT, () -> {
+            ToolsModel.Row row = ToolsModel.get().find(launch.getLaunchConfiguration().getName(), "robot.py");
+            return row != null && row.state() == ToolState.EXITED;
+        });
         AtomicReference<List<String>> shown = new AtomicReference<>();
         Display.getDefault().syncExec(() -> {
             try {
@@ -236,6 +241,13 @@ class RobotSessionLaunchTest {
         String name = launch.getLaunchConfiguration().getName();
         assertTrue(shown.get().contains(name + "|Player|ready"), shown.get().toString());
         assertTrue(shown.get().contains(name + "|Network Spy|ready"), shown.get().toString());
+        // the robot program is a part too (issue 24, item 9): it ran and ended by itself
+        assertTrue(shown.get().contains(name + "|robot.py|exited"), shown.get().toString());
+        assertEquals(0, ToolsModel.get().find(name, "robot.py").lastExit());
+        // the spy's PID is the workbench's own: the row says why
+        assertTrue(ToolsModel.get().find(name, SessionParts.SPY_PART).detail().endsWith(SessionParts.INSIDE_THE_WORKBENCH),
+                ToolsModel.get().find(name, SessionParts.SPY_PART).detail());
+        assertEquals(ProcessHandle.current().pid(), ToolsModel.get().find(name, SessionParts.SPY_PART).pid());
 
         // terminating the launch stops everything
         Path scratch = session.scratchDirectory();
@@ -251,6 +263,9 @@ class RobotSessionLaunchTest {
             assertTrue(p.isTerminated(), p.getLabel());
         }
         assertEquals(ToolState.STOPPED, ToolsModel.get().find(name, "Player").state());
+        // the program and the replayed client: two connections, said as such (and one as one)
+        assertEquals("2 connections relayed", ToolsModel.get().find(name, SessionParts.SPY_PART).detail());
+        assertEquals("1 connection relayed", SessionParts.relayed(1));
 
         // the spy log is in the project and holds the traffic
         Await.until("the spy log appears in the project", WAIT, () -> {

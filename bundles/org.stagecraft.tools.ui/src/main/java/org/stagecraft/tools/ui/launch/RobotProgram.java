@@ -55,6 +55,7 @@ final class RobotProgram {
             try {
                 if (program.getProject().hasNature(LaunchAttributes.PYDEV_NATURE)) {
                     startWithPyDev(pydev, config, mode, launch, program, lm, monitor);
+                    ProgramPart.follow(parts, program.getName(), launch.getProcesses()[partsBefore]);
                     return;
                 }
                 SessionParts.log(Status.warning(program.getProject().getName() + " is not a PyDev project (no "
@@ -74,8 +75,9 @@ final class RobotProgram {
         String[] env = withClientPath(lm.getEnvironment(config), lm);
         File dir = program.getParent().getLocation().toFile();
         Process p = DebugPlugin.exec(new String[] {python, program.getLocation().toOSString()}, dir, env);
-        DebugPlugin.newProcess(launch, p, program.getName() + " (" + python + ")",
+        IProcess process = DebugPlugin.newProcess(launch, p, program.getName() + " (" + python + ")",
                 Map.of(IProcess.ATTR_PROCESS_TYPE, "python"));
+        ProgramPart.follow(parts, program.getName(), process);
     }
 
     /**

@@ -31,6 +31,8 @@ import org.stagecraft.tools.ui.view.ToolsModel;
  */
 public final class SessionParts implements ToolListener {
     public static final String SPY_PART = "Network Spy";
+    /** Said of the spy's row: its PID is the workbench's own, for it runs in the workbench's process. */
+    public static final String INSIDE_THE_WORKBENCH = " (runs inside the workbench: its PID is the workbench's)";
     /** The Tools view's row for the session as a whole. */
     public static final String SESSION_PART = "Session";
     private static final String BUNDLE = "org.stagecraft.tools.ui";
@@ -56,6 +58,16 @@ public final class SessionParts implements ToolListener {
 
     public String sessionName() {
         return sessionName;
+    }
+
+    /** The spy's row once it stopped: e.g. "1 connection relayed". */
+    public static String relayed(long connections) {
+        return connections + (connections == 1 ? " connection relayed" : " connections relayed");
+    }
+
+    /** Whether the session is being stopped (or has been), on request or because it failed. */
+    public synchronized boolean isStopping() {
+        return stopping;
     }
 
     public @Nullable RobotSession session() {
@@ -84,7 +96,7 @@ public final class SessionParts implements ToolListener {
                 + "  ->  Player on 127.0.0.1:" + moved));
         p.stdout(s.config().log() != null ? "logging to " + s.config().log() : "not logging (no log folder set)");
         ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.READY, ProcessHandle.current().pid(), 0,
-                null, "spying on " + s.portMap().keySet()));
+                null, "spying on " + s.portMap().keySet() + INSIDE_THE_WORKBENCH));
         ToolsModel.get().update(new ToolsModel.Row(sessionName, SESSION_PART, ToolState.READY, -1, 0, null, "running"));
         holds = SessionHolds.attach(this, s);
         s.failed().thenAccept(this::sessionFailed);
@@ -263,7 +275,7 @@ public final class SessionParts implements ToolListener {
                         + (s.pipeline().internalErrors() > 0 ? "; " + s.pipeline().internalErrors() + " observation failures" : "")
                         + (s.pipeline().recorderError() != null ? "; " + s.pipeline().recorderError() : ""));
                 ToolsModel.get().update(new ToolsModel.Row(sessionName, SPY_PART, ToolState.STOPPED, -1, 0, null,
-                        s.spy().totalConnections() + " connections relayed"));
+                        relayed(s.spy().totalConnections())));
             }
             if (failure == null) {
                 ToolsModel.get().update(new ToolsModel.Row(sessionName, SESSION_PART, ToolState.STOPPED, -1, 0, null,
