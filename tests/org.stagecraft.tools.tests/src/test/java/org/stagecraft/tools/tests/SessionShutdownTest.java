@@ -7,23 +7,30 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
+import org.eclipse.core.resources.IFolder;
 import org.eclipse.core.resources.IProject;
+import org.eclipse.core.runtime.ILogListener;
+import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.NullProgressMonitor;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.debug.core.DebugPlugin;
 import org.eclipse.debug.core.ILaunch;
 import org.eclipse.debug.core.ILaunchConfigurationWorkingCopy;
 import org.eclipse.debug.core.ILaunchManager;
+import org.eclipse.ui.PlatformUI;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.osgi.framework.Bundle;
+import org.stagecraft.tests.support.Await;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.session.RobotSession;
+import org.stagecraft.tools.ui.launch.ExitWithRunningSessions;
 import org.stagecraft.tools.ui.launch.LaunchAttributes;
 import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
 import org.stagecraft.tools.ui.launch.RunningSessions;
@@ -61,8 +68,8 @@ class SessionShutdownTest {
         project.delete(true, true, new NullProgressMonitor());
     }
 
-    @Test
-    void stoppingThePluginStopsItsRunningSessionsBeforeItReturns() throws Exception {
+    /** A session with the stand-in Player, logging into {@code logFolder} ("" for none). */
+    private SessionParts launch(String logFolder) throws Exception {
         ILaunchManager lm = DebugPlugin.getDefault().getLaunchManager();
         ILaunchConfigurationWorkingCopy wc = lm.getLaunchConfigurationType(LaunchAttributes.TYPE).newInstance(null,
                 lm.generateLaunchConfigurationName("shutdown"));
@@ -70,10 +77,66 @@ class SessionShutdownTest {
         wc.setAttribute(LaunchAttributes.PLAYER, Fixtures.standIn(tmp).toString());
         wc.setAttribute(LaunchAttributes.PLAYER_ENVIRONMENT, Map.of("STANDIN_TRACE", Fixtures.traces().resolve(TRACE).toString()));
         wc.setAttribute(LaunchAttributes.DEFAULT_PORT, Ports.free("127.0.0.1", 1).get(0));
-        wc.setAttribute(LaunchAttributes.LOG_FOLDER, "");
+        wc.setAttribute(LaunchAttributes.LOG_FOLDER, logFolder);
         wc.setAttribute(LaunchAttributes.TOOLS, List.<String>of());
         launch = wc.launch(ILaunchManager.RUN_MODE, new NullProgressMonitor());
-        SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
+        return RobotSessionLaunchDelegate.partsOf(launch);
+    }
+
+    /**
+     * Issue 24, item 2: exiting with a session running asks first; "Cancel" keeps the IDE and the
+     * session; "Stop and Exit" stops the session before the workbench goes: its launch has ended, the
+     * new spy log is in the project, and nothing reached the Error Log.
+     */
+    @Test
+    void exitingWithASessionRunningAsksAndStopsItWhileTheWorkbenchIsWhole() throws Exception {
+        SessionParts parts = launch("spy-logs");
+        assertNotNull(parts, "the session runs");
+        ProcessHandle player = parts.session().player().process();
+        List<List<String>> asked = new ArrayList<>();
+        ExitWithRunningSessions cancel = new ExitWithRunningSessions(names -> {
+            asked.add(names);
+            return false; // the user chose Cancel
+        });
+        assertFalse(Await.ui(() -> cancel.preShutdown(PlatformUI.getWorkbench(), false)), "Cancel: the IDE stays");
+        assertEquals(List.of(List.of(parts.sessionName())), asked, "the user was asked, naming the session");
+        assertFalse(launch.isTerminated(), "Cancel: the session goes on");
+        assertTrue(player.isAlive());
+
+        List<IStatus> logged = new ArrayList<>();
+        ILogListener errors = (status, plugin) -> {
+            if (status.matches(IStatus.ERROR)) {
+                logged.add(status);
+            }
+        };
+        Platform.addLogListener(errors);
+        try {
+            ExitWithRunningSessions stop = new ExitWithRunningSessions(names -> true);
+            assertTrue(Await.ui(() -> stop.preShutdown(PlatformUI.getWorkbench(), false)), "Stop and Exit");
+            // all of it done when preShutdown returns, while the workbench is whole
+            assertTrue(launch.isTerminated(), "the session's launch has ended");
+            assertFalse(player.isAlive(), "Player is gone");
+            assertTrue(RunningSessions.running().isEmpty(), RunningSessions.running().toString());
+            IFolder logs = project.getFolder("spy-logs");
+            assertTrue(logs.exists() && logs.members().length == 1, "the new spy log is shown in the project");
+        } finally {
+            Platform.removeLogListener(errors);
+        }
+        assertEquals(List.of(), logged, "nothing in the Error Log");
+    }
+
+    @Test
+    void exitingWithoutASessionAsksNothing() {
+        ExitWithRunningSessions never = new ExitWithRunningSessions(names -> {
+            throw new AssertionError("asked with no session running: " + names);
+        });
+        assertTrue(RunningSessions.running().isEmpty());
+        assertTrue(Await.ui(() -> never.preShutdown(PlatformUI.getWorkbench(), false)));
+    }
+
+    @Test
+    void stoppingThePluginStopsItsRunningSessionsBeforeItReturns() throws Exception {
+        SessionParts parts = launch("");
         assertNotNull(parts, "the session runs");
         RobotSession session = parts.session();
         ProcessHandle player = session.player().process();

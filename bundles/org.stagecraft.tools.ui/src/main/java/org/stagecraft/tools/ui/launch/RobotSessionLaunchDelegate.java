@@ -3,6 +3,7 @@ package org.stagecraft.tools.ui.launch;
 import org.eclipse.core.resources.IResource;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IProgressMonitor;
+import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Status;
 import org.eclipse.core.runtime.SubMonitor;
 import org.eclipse.core.runtime.jobs.Job;
@@ -28,6 +29,8 @@ import org.stagecraft.tools.ui.view.ToolsModel;
 public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegate {
 
     /** The running sessions' parts, by launch (for tests and the Tools view). */
+    /** The family of the jobs that show a stopped session's new spy log in its project. */
+    public static final Object LOG_REFRESH = new Object();
     private static final java.util.Map<ILaunch, SessionParts> RUNNING = new java.util.concurrent.ConcurrentHashMap<>();
 
     public static @Nullable SessionParts partsOf(ILaunch launch) {
@@ -111,14 +114,23 @@ public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegat
                 RUNNING.remove(launch);
                 parts.stopInBackground();
                 if (settings.logFolder() != null) {
-                    Job refresh = Job.create("Refresh spy logs", mon -> {
-                        try {
-                            settings.logFolder().refreshLocal(IResource.DEPTH_ONE, mon);
-                        } catch (CoreException e) {
-                            return e.getStatus();
+                    Job refresh = new Job("Refresh spy logs") {
+                        @NonNullByDefault({}) // the parameters as the unannotated library gives them
+                        @Override
+                        protected IStatus run(IProgressMonitor mon) {
+                            try {
+                                settings.logFolder().refreshLocal(IResource.DEPTH_ONE, mon);
+                            } catch (CoreException e) {
+                                return e.getStatus();
+                            }
+                            return Status.OK_STATUS;
                         }
-                        return Status.OK_STATUS;
-                    });
+
+                        @Override
+                        public boolean belongsTo(@Nullable Object family) {
+                            return family == LOG_REFRESH;
+                        }
+                    };
                     refresh.setSystem(true);
                     refresh.schedule();
                 }

@@ -60,6 +60,11 @@ public final class SessionParts implements ToolListener {
         return sessionName;
     }
 
+    /** The session's launch. */
+    public ILaunch launch() {
+        return launch;
+    }
+
     /** The spy's row once it stopped: e.g. "1 connection relayed". */
     public static String relayed(long connections) {
         return connections + (connections == 1 ? " connection relayed" : " connections relayed");

@@ -1,0 +1,97 @@
+package org.stagecraft.tools.ui.launch;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.function.Predicate;
+
+import org.eclipse.core.runtime.jobs.Job;
+import org.eclipse.jface.dialogs.MessageDialog;
+import org.eclipse.jdt.annotation.NonNullByDefault;
+import org.eclipse.swt.custom.BusyIndicator;
+import org.eclipse.swt.widgets.Display;
+import org.eclipse.ui.IWorkbench;
+import org.eclipse.ui.IWorkbenchListener;
+import org.eclipse.ui.IWorkbenchWindow;
+
+/**
+ * Exiting the IDE while Robot Sessions run: the user is asked (as Eclipse asks before exiting with
+ * unsaved editors), and the sessions are stopped while the workbench is still whole — their launches
+ * end, the debug platform tells its views, the new spy logs appear in their projects — before the
+ * workspace is saved. Stopping them only when this plug-in stops came after the display was gone: the
+ * debug platform's updates were refused (errors in the log), and the logs' refresh left the workspace
+ * changed after its save.
+ */
+public final class ExitWithRunningSessions implements IWorkbenchListener {
+    /** How long exiting waits for the sessions' launches to end and their logs to be shown. */
+    static final Duration SETTLE = Duration.ofSeconds(15);
+
+    private final Predicate<List<String>> stopThem;
+
+    /** Asks the user in a dialog. */
+    public ExitWithRunningSessions() {
+        this(ExitWithRunningSessions::ask);
+    }
+
+    /** @param stopThem given the running sessions' names, whether to stop them and exit (false: stay) */
+    public ExitWithRunningSessions(Predicate<List<String>> stopThem) {
+        this.stopThem = stopThem;
+    }
+
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
+    @Override
+    public boolean preShutdown(IWorkbench workbench, boolean forced) {
+        List<SessionParts> running = RunningSessions.running();
+        if (running.isEmpty()) {
+            return true;
+        }
+        if (!forced && !stopThem.test(running.stream().map(SessionParts::sessionName).toList())) {
+            return false;
+        }
+        Display display = Display.getCurrent();
+        Runnable stop = () -> RunningSessions.stopAll();
+        if (display != null) {
+            BusyIndicator.showWhile(display, stop);
+            settle(display, running);
+        } else {
+            stop.run();
+        }
+        return true;
+    }
+
+    @NonNullByDefault({}) // the parameters as the unannotated library gives them
+    @Override
+    public void postShutdown(IWorkbench workbench) {
+        // the sessions were stopped before
+    }
+
+    /**
+     * Runs the display until every stopped session's launch has ended and its log is shown in the
+     * project (the debug platform and the refresh post their work to the display), within {@link #SETTLE}.
+     */
+    private static void settle(Display display, List<SessionParts> stopped) {
+        long deadline = System.nanoTime() + SETTLE.toNanos();
+        while (System.nanoTime() < deadline && (stopped.stream().anyMatch(p -> !p.launch().isTerminated())
+                || Job.getJobManager().find(RobotSessionLaunchDelegate.LOG_REFRESH).length > 0)) {
+            if (!display.readAndDispatch()) {
+                display.timerExec(20, () -> { }); // wake up to look again: the jobs end off the UI thread
+                display.sleep();
+            }
+        }
+    }
+
+    private static boolean ask(List<String> sessions) {
+        Display display = Display.getCurrent();
+        IWorkbenchWindow window = org.eclipse.ui.PlatformUI.getWorkbench().getActiveWorkbenchWindow();
+        if (display == null) {
+            return true;
+        }
+        String which = sessions.size() == 1 ? "The Robot Session '" + sessions.get(0) + "' is"
+                : sessions.size() + " Robot Sessions are";
+        MessageDialog dialog = new MessageDialog(window != null ? window.getShell() : display.getActiveShell(),
+                "Robot Sessions Running", null, which + " running. Exiting stops "
+                        + (sessions.size() == 1 ? "it" : "them") + ": Player, the tools and the robot program end,"
+                        + " the robots are left standing, and each spy log is closed and kept.",
+                MessageDialog.QUESTION, 0, "Stop and Exit", "Cancel");
+        return dialog.open() == 0;
+    }
+}
