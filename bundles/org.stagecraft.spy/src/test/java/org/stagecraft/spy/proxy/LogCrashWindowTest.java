@@ -147,6 +147,13 @@ class LogCrashWindowTest {
     @Test
     void whatWasRelayedIsInTheFileWellWithinASecondWithoutAFlushOrClose() throws Exception {
         byte[][] rec = streams("pioneer-laser-sonar.gt.trace.jsonl");
+        // a log written and read once first, so that the clock below measures the log's timing, not the
+        // first use of zstd and of the reader's classes in this JVM (a few hundred ms on their own)
+        Path warm = dir.resolve("warm-up.mcap");
+        try (SpyLogWriter w = SpyLogWriter.create(warm, Map.of())) {
+            w.wire(1, 1, 6665, Direction.SERVER_TO_CLIENT, 0, LogEntry.Kind.UNFRAMED, new byte[100], "warm-up");
+        }
+        assertEquals(1, logged(warm)[0]);
         Path file = dir.resolve("crash.mcap");
         ObservationPipeline pipeline = new ObservationPipeline(new StreamBus(), DECODER,
                 new LogRecorder(SpyLogWriter.create(file, Map.of())), 64 << 20);
@@ -176,8 +183,9 @@ class LogCrashWindowTest {
         long tookMillis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - fed);
         assertTrue(found >= expected, "the messages reached the file at all: " + found + " of " + expected);
         // The log writes the open chunk within ~50-100 ms of traffic (ObservationPipeline.LOG_WRITE_NANOS plus a
-        // tick); the bound is half of the old once-a-second flush, so a loaded machine has room and the old
-        // behaviour (the chunk written at the first flush, a second after the start) cannot pass.
+        // tick; 51-71 ms measured here); the bound is half of the old once-a-second flush, so a loaded machine
+        // has room and the old behaviour (the chunk written at the first flush, a second after the start)
+        // cannot pass.
         assertTrue(tookMillis < 500, "in the file " + tookMillis + " ms after it was observed (the bound is 500 ms)");
     }
 }
