@@ -33,6 +33,7 @@ import org.stagecraft.recording.play.TimedConnection;
 import org.stagecraft.recording.play.TimedRecording;
 import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.session.RobotSession;
+import org.stagecraft.tools.ui.launch.ExitWithRunningSessions;
 import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
 import org.stagecraft.tools.ui.launch.SessionParts;
 import org.stagecraft.tools.ui.view.ToolsModel;
@@ -213,7 +214,7 @@ final class DemoRun {
             status.sample(views, spyLog);
         });
         if (options.exitAfterSeconds() > 0) {
-            display.asyncExec(() -> PlatformUI.getWorkbench().close());
+            display.asyncExec(DemoRun::closeUnattended);
         } else {
             display.asyncExec(() -> MessageDialog.openError(window().getShell(), "Stagecraft demo", message));
         }
@@ -230,6 +231,12 @@ final class DemoRun {
             status.finish(views, spyLog);
         }
         DemoLog.info("closing the workbench after " + options.exitAfterSeconds() + " s (--exit-after)");
+        closeUnattended();
+    }
+
+    /** Closes the workbench with nobody there to answer: the running session is stopped without asking. */
+    private static void closeUnattended() {
+        System.setProperty(ExitWithRunningSessions.WITHOUT_ASKING, "true");
         PlatformUI.getWorkbench().close();
     }
 

@@ -27,9 +27,15 @@ public final class ExitWithRunningSessions implements IWorkbenchListener {
 
     private final Predicate<List<String>> stopThem;
 
-    /** Asks the user in a dialog. */
+    /**
+     * System property: when "true", exiting stops the running sessions without asking. For closes no
+     * user is there to answer: the plug-in tests' harness, the demo's {@code --exit-after}.
+     */
+    public static final String WITHOUT_ASKING = "stagecraft.exit.stopSessionsWithoutAsking";
+
+    /** Asks the user in a dialog (unless {@link #WITHOUT_ASKING} says not to). */
     public ExitWithRunningSessions() {
-        this(ExitWithRunningSessions::ask);
+        this(sessions -> Boolean.getBoolean(WITHOUT_ASKING) || ask(sessions));
     }
 
     /** @param stopThem given the running sessions' names, whether to stop them and exit (false: stay) */
