@@ -89,7 +89,7 @@ final class SpyCommand {
         } catch (IllegalArgumentException e) {
             err.println("stagecraft spy: " + e.getMessage());
             err.println(USAGE);
-            return 2;
+            return ExitCode.USAGE;
         }
         // Ctrl-C (SIGINT) and SIGTERM run the shutdown hooks: ours asks serve() to stop and waits
         // until the log is closed. A JVM ending on a signal exits with 128 + the signal (130, 143)
@@ -142,7 +142,7 @@ final class SpyCommand {
         } catch (IOException e) {
             err.println("stagecraft spy: " + e.getMessage());
             spy.close();
-            return 1;
+            return ExitCode.FAILED;
         }
         // The Foxglove server too, before the log: a port in use must not leave an empty log either.
         FoxgloveServer foxglove = null;
@@ -153,7 +153,7 @@ final class SpyCommand {
             } catch (IOException e) {
                 err.println("stagecraft spy: " + e.getMessage());
                 spy.close();
-                return 1;
+                return ExitCode.FAILED;
             }
             foxglove.onNotice(n -> err.print((tty ? "\n" : "") + "stagecraft spy: foxglove: " + n + (tty ? "" : "\n")));
         }
@@ -171,7 +171,7 @@ final class SpyCommand {
                 if (foxglove != null) {
                     foxglove.close();
                 }
-                return 1;
+                return ExitCode.FAILED;
             }
         }
         StreamBus bus = new StreamBus();
@@ -189,7 +189,7 @@ final class SpyCommand {
         } catch (IOException e) {
             err.println("stagecraft spy: " + e.getMessage());
             stop(spy, pipeline, live, bus);
-            return 1;
+            return ExitCode.FAILED;
         }
         for (int i = 0; i < o.routes().size(); i++) {
             InetSocketAddress a = spy.boundAddresses().get(i);
@@ -218,7 +218,8 @@ final class SpyCommand {
         }
         stop(spy, pipeline, live, bus);
         err.println((tty ? "\n" : "") + "stopped: " + summary.totals());
-        return 0;
+        // the wire was relayed whole; a log that stopped early lacks part of it (the line above says how much)
+        return pipeline.recorderError() != null ? ExitCode.LOSSES : ExitCode.DONE;
     }
 
     /** The live view: the Foxglove server and the relay that feeds it from the bus. */

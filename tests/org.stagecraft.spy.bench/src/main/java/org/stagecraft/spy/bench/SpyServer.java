@@ -119,7 +119,7 @@ public final class SpyServer {
                 pipeline.messages(), pipeline.decodeProblems(), pipeline.droppedBytes(),
                 pipeline.waitedForObservation().toNanos() / 1e9, pipeline.stalls(),
                 log == null ? "" : String.format(", log %.1f MB", Files.size(log) / 1e6),
-                pipeline.recorderError() == null ? "" : ", log error: " + pipeline.recorderError()));
+                pipeline.recorderError() == null ? "" : "; " + pipeline.recorderError()));
         pipeline = null;
         if (log != null) {
             Files.deleteIfExists(log);
