@@ -2,12 +2,12 @@ package org.stagecraft.tools.ui.launch;
 
 import java.time.Duration;
 import java.util.List;
+import java.util.function.BooleanSupplier;
 import java.util.function.Predicate;
 
 import org.eclipse.core.runtime.jobs.Job;
 import org.eclipse.jface.dialogs.MessageDialog;
 import org.eclipse.jdt.annotation.NonNullByDefault;
-import org.eclipse.swt.custom.BusyIndicator;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.ui.IWorkbench;
 import org.eclipse.ui.IWorkbenchListener;
@@ -23,7 +23,7 @@ import org.eclipse.ui.IWorkbenchWindow;
  */
 public final class ExitWithRunningSessions implements IWorkbenchListener {
     /** How long exiting waits for the sessions' launches to end and their logs to be shown. */
-    static final Duration SETTLE = Duration.ofSeconds(15);
+    static final Duration SETTLE = Duration.ofSeconds(30);
 
     private final Predicate<List<String>> stopThem;
 
@@ -54,13 +54,15 @@ public final class ExitWithRunningSessions implements IWorkbenchListener {
             return false;
         }
         Display display = Display.getCurrent();
-        Runnable stop = () -> RunningSessions.stopAll();
-        if (display != null) {
-            BusyIndicator.showWhile(display, stop);
-            settle(display, running);
-        } else {
-            stop.run();
+        if (display == null) {
+            RunningSessions.stopAll();
+            return true;
         }
+        // stopped on a thread of its own while the display runs: a part that hands work to the display
+        // (a view, a console) while it stops would otherwise wait for the display that waits for it
+        Thread stopping = Thread.ofPlatform().name("stagecraft-exit-stop").start(RunningSessions::stopAll);
+        settle(display, () -> stopping.isAlive() || running.stream().anyMatch(p -> !p.launch().isTerminated())
+                || Job.getJobManager().find(RobotSessionLaunchDelegate.LOG_REFRESH).length > 0);
         return true;
     }
 
@@ -71,15 +73,14 @@ public final class ExitWithRunningSessions implements IWorkbenchListener {
     }
 
     /**
-     * Runs the display until every stopped session's launch has ended and its log is shown in the
-     * project (the debug platform and the refresh post their work to the display), within {@link #SETTLE}.
+     * Runs the display while {@code busy}: the sessions stop, the debug platform ends their launches
+     * and the refresh shows their new logs (both post work to the display), within {@link #SETTLE}.
      */
-    private static void settle(Display display, List<SessionParts> stopped) {
+    private static void settle(Display display, BooleanSupplier busy) {
         long deadline = System.nanoTime() + SETTLE.toNanos();
-        while (System.nanoTime() < deadline && (stopped.stream().anyMatch(p -> !p.launch().isTerminated())
-                || Job.getJobManager().find(RobotSessionLaunchDelegate.LOG_REFRESH).length > 0)) {
+        while (System.nanoTime() < deadline && busy.getAsBoolean()) {
             if (!display.readAndDispatch()) {
-                display.timerExec(20, () -> { }); // wake up to look again: the jobs end off the UI thread
+                display.timerExec(20, () -> { }); // wake up to look again: the stop and the jobs end off the UI thread
                 display.sleep();
             }
         }
