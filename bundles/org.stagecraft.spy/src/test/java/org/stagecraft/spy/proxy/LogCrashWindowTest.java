@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
@@ -25,9 +24,6 @@ import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.PlayerFramer;
-import org.stagecraft.recording.trace.TraceCorpus;
-import org.stagecraft.recording.trace.TraceReader;
-import org.stagecraft.recording.trace.TraceRecord;
 import org.stagecraft.spy.Cleanup;
 import org.stagecraft.spy.FillingFile;
 import org.stagecraft.spy.log.LogEntry;
@@ -49,20 +45,6 @@ class LogCrashWindowTest {
     private final Cleanup cleanup = new Cleanup();
     @TempDir
     Path dir;
-
-    /** The two byte streams of a one-connection recording. */
-    private static byte[][] streams(String trace) throws IOException {
-        ByteArrayOutputStream c2s = new ByteArrayOutputStream();
-        ByteArrayOutputStream s2c = new ByteArrayOutputStream();
-        try (TraceReader r = new TraceReader(TraceCorpus.file(trace))) {
-            for (TraceRecord rec = r.next(); rec != null; rec = r.next()) {
-                if (rec instanceof TraceRecord.Chunk c && c.stream().conn() == 1) {
-                    (c.stream().dir() == Direction.CLIENT_TO_SERVER ? c2s : s2c).writeBytes(c.data());
-                }
-            }
-        }
-        return new byte[][] {c2s.toByteArray(), s2c.toByteArray()};
-    }
 
     /** Wire events (banner, Player messages, unframed pieces) of a whole stream, and their bytes. */
     private static long[] events(byte[] stream, Direction dir) {
@@ -99,7 +81,7 @@ class LogCrashWindowTest {
 
     @Test
     void aFullDiskSaysHowManyRelayedMessagesAndBytesAreNotInTheLog() throws Exception {
-        byte[][] rec = streams("pioneer-laser-sonar.gt.trace.jsonl");
+        byte[][] rec = RecordedSession.streams("pioneer-laser-sonar.gt.trace.jsonl");
         Path file = dir.resolve("full.mcap");
         // a disk that fills after 40 kB: a few small chunks reach the file, then writing fails
         FillingFile disk = new FillingFile(FileChannel.open(file, StandardOpenOption.CREATE, StandardOpenOption.WRITE,
@@ -146,7 +128,7 @@ class LogCrashWindowTest {
 
     @Test
     void whatWasRelayedIsInTheFileWellWithinASecondWithoutAFlushOrClose() throws Exception {
-        byte[][] rec = streams("pioneer-laser-sonar.gt.trace.jsonl");
+        byte[][] rec = RecordedSession.streams("pioneer-laser-sonar.gt.trace.jsonl");
         // a log written and read once first, so that the clock below measures the log's timing, not the
         // first use of zstd and of the reader's classes in this JVM (a few hundred ms on their own)
         Path warm = dir.resolve("warm-up.mcap");
