@@ -16,7 +16,13 @@ import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.NullProgressMonitor;
 import org.eclipse.core.runtime.preferences.InstanceScope;
 import org.eclipse.jface.notifications.NotificationPopup;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.graphics.Point;
+import org.eclipse.swt.graphics.Rectangle;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.Link;
 import org.eclipse.ui.IEditorPart;
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PlatformUI;
@@ -48,7 +54,34 @@ class PyDevOfferTest {
         assertTrue(InstanceScope.INSTANCE.getNode("org.stagecraft.pydev.ui").getBoolean(PyDevOffer.OFFERED, false),
                 "offered once per workspace");
         assertTrue(PyDev.HOW_TO.contains(PyDev.UPDATE_SITE));
+        // issue 24, item 7: the whole text shows (the link to Help > Install PyDev... was cut off), and the
+        // offer stays until it is closed (it vanished by itself)
+        Link link = find(popup.getShell(), Link.class);
+        assertNotNull(link, "the offer's text");
+        Point needed = link.computeSize(link.getSize().x, SWT.DEFAULT);
+        assertTrue(link.getSize().y >= needed.y, "the text is " + needed.y + " pixels high at its width, shown in "
+                + link.getSize().y);
+        Rectangle inShell = popup.getShell().getDisplay().map(link.getParent(), popup.getShell(), link.getBounds());
+        assertTrue(popup.getShell().getClientArea().contains(inShell.x, inShell.y + inShell.height - 1),
+                "the text's last line is inside the popup: " + inShell + " in " + popup.getShell().getClientArea());
+        assertEquals(PyDevOffer.STAYS, popup.getDelayClose(), "no closing by itself");
         popup.close();
+    }
+
+    /** The first control of {@code type} in the tree under {@code c}, or null. */
+    private static <T extends Control> T find(Control c, Class<T> type) {
+        if (type.isInstance(c)) {
+            return type.cast(c);
+        }
+        if (c instanceof Composite parent) {
+            for (Control child : parent.getChildren()) {
+                T found = find(child, type);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        return null;
     }
 
     @Test
