@@ -21,6 +21,9 @@ import org.python.pydev.shared_core.structure.Tuple;
 
 /** A Python interpreter configured in PyDev the way its interpreter preference page does it. */
 final class PyDevInterpreter {
+    /** The interpreter configured in this JVM, or null. */
+    private static String configured;
+
     private PyDevInterpreter() {
     }
 
@@ -29,7 +32,12 @@ final class PyDevInterpreter {
      * pysrc/interpreterInfo.py with it. Also turns off the "preferred settings" dialog PyDev's editor
      * would open.
      */
-    static void configure(String python) throws Exception {
+    static synchronized void configure(String python) throws Exception {
+        if (python.equals(configured)) {
+            // once per test JVM: setting the same interpreter again makes PyDev read its libraries anew,
+            // and a launch made meanwhile gets a path without them
+            return;
+        }
         IEclipsePreferences pydevPrefs = InstanceScope.INSTANCE.getNode("org.python.pydev");
         pydevPrefs.putBoolean(PydevRootPrefs.CHECK_PREFERRED_PYDEV_SETTINGS, false);
         pydevPrefs.flush();
@@ -40,6 +48,7 @@ final class PyDevInterpreter {
         IInterpreterManager manager = InterpreterManagersAPI.getPythonInterpreterManager();
         manager.setInfos(new IInterpreterInfo[] {created.o1}, Set.of(created.o1.getExecutableOrJar()), new NullProgressMonitor());
         assertTrue(manager.isConfigured(), "PyDev has a default interpreter");
+        configured = python;
     }
 
     /** The first {@code name} on PATH. */
