@@ -62,6 +62,8 @@ public final class InspectorPanel {
     private MessageFilter filter;
     private MessageWindow window = new MessageWindow(java.util.List.of(), 0, true, true);
     private boolean loading;
+    /** The newest {@link #follow} that came while reading, or null. */
+    private @Nullable Followed pendingFollow;
     /** The replay position the current window was read around. */
     private long readAt;
     private @Nullable LogMessage detailed;
@@ -203,7 +205,13 @@ public final class InspectorPanel {
      * new window when the position left the one held.
      */
     public void follow(long position, @Nullable LogMessage last) {
-        if (log == null || loading) {
+        if (log == null) {
+            return;
+        }
+        if (loading) {
+            // a read is under way: the newest place the replay moved to is followed once it is shown
+            // (dropped, a seek made while reading left the inspector where the read was)
+            pendingFollow = new Followed(position, last);
             return;
         }
         // an empty window (a sparse filter) is read again only once the replay has moved on a second:
@@ -296,6 +304,8 @@ public final class InspectorPanel {
             return;
         }
         loading = false;
+        Followed pending = pendingFollow;
+        pendingFollow = null;
         if (w == null) {
             status.setText(error);
             return;
@@ -310,6 +320,13 @@ public final class InspectorPanel {
         } else if (w.anchorIndex() < w.rows().size()) {
             table.setTopIndex(Math.max(0, w.anchorIndex() - 5));
         }
+        if (pending != null) {
+            follow(pending.position(), pending.last());
+        }
+    }
+
+    /** Where the replay moved while a read was under way. */
+    private record Followed(long position, @Nullable LogMessage last) {
     }
 
     private String describe(MessageWindow w) {

@@ -15,6 +15,7 @@ import org.eclipse.core.filesystem.EFS;
 import org.eclipse.core.resources.IFile;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Table;
 import org.eclipse.ui.IEditorPart;
 import org.eclipse.ui.IWorkbenchPage;
 import org.eclipse.ui.PlatformUI;
@@ -90,6 +91,37 @@ class SessionLogEditorTest {
             }
         }
         throw new AssertionError("nothing published after " + t);
+    }
+
+    /**
+     * Issue 24, item 10: after a seek the inspector shows the row the replay is at, also when the seek
+     * came while the inspector was still reading a window (before, that seek was dropped and the
+     * inspector stayed where the read was).
+     */
+    @Test
+    void theInspectorShowsWhereTheReplayWasMovedWhileItWasReading() throws Exception {
+        SessionLogEditor e = open(page, TestLogs.spyLog("seek.mcap", 64 << 10));
+        waitForTimeline(e);
+        waitForInspector(e);
+        Ui.spinUntil(() -> e.inspector().statusText().contains("entries"), 30_000, "the inspector to settle");
+        LogMessage at12 = firstPublishedFrom(e, e.log().startNanos() + 12_000_000_000L);
+        LogMessage at27 = firstPublishedFrom(e, e.log().startNanos() + 27_000_000_000L);
+        e.inspector().follow(at12.timeNanos(), at12); // outside the first window: a read starts
+        e.inspector().follow(at27.timeNanos(), at27); // the replay moved again while it reads
+        try {
+            Ui.spinUntil(() -> e.inspector().detailed() != null && at27.samePlace(e.inspector().detailed()), 30_000,
+                    "the inspector at the replay's last position (27 s)");
+        } catch (AssertionError x) {
+            throw new AssertionError(x.getMessage() + "; inspector: " + e.inspector().statusText() + ", detailed at "
+                    + (e.inspector().detailed() == null ? "none" : (e.inspector().detailed().timeNanos() - e.log().startNanos()) / 1e9)
+                    + " s, wanted " + (at27.timeNanos() - e.log().startNanos()) / 1e9 + " s", x);
+        }
+        Table table = e.inspector().table();
+        int row = table.getSelectionIndex();
+        assertTrue(row >= 0 && at27.samePlace(e.inspector().window().rows().get(row).message()), "its row is selected");
+        int visibleRows = Math.max(1, table.getClientArea().height / table.getItemHeight());
+        assertTrue(row >= table.getTopIndex() && row < table.getTopIndex() + visibleRows,
+                "its row is in sight: row " + row + ", top " + table.getTopIndex() + ", " + visibleRows + " rows shown");
     }
 
     @Test
