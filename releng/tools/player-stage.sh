@@ -211,7 +211,7 @@ build_player() {
     cmake -S "$psrc" -B "$pbld" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_CXX_FLAGS=-std=gnu++14 -DBoost_NO_BOOST_CMAKE=ON -DUSE_BOOST_SIGNALS=OFF \
       -DPYTHON_EXECUTABLE="$py" -DBUILD_PYTHONC_BINDINGS=ON
-  step "compiling Player (make -j$jobs, ~1-2 min on 2 cores)" "$LOG_DIR/player-make.log" make -C "$pbld" -j"$jobs"
+  step "compiling Player (make -j$jobs; 80-112 s on 2 idle cores, 4-7 min on a busy machine)" "$LOG_DIR/player-make.log" make -C "$pbld" -j"$jobs"
   step "installing Player" "$LOG_DIR/player-install.log" make -C "$pbld" install
   [ -x "$prefix/bin/player" ] || die "Player's install did not produce $prefix/bin/player (see $LOG_DIR/player-install.log)"
   # Player installs its examples as source only; keep the built C++ example clients too.
