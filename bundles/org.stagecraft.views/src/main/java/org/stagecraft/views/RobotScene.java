@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.ToIntFunction;
 
 import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.scene.Camera;
@@ -221,7 +222,7 @@ public final class RobotScene implements AutoCloseable {
             r.frame(gl, new RenderInput(l, f.snapshot(), f.drainUnseen(), version, world, camera));
             drawnVersions.put(l.id(), version);
         }
-        drawOverlay(gl, height);
+        drawOverlay(gl, width, height);
         frames++;
     }
 
@@ -249,8 +250,11 @@ public final class RobotScene implements AutoCloseable {
         }
     }
 
-    /** The overlay on a white band, so it reads over any layer. */
-    private void drawOverlay(GL2 gl, int height) {
+    /**
+     * The overlay on a white band, so it reads over any layer; wrapped at spaces into lines that fit
+     * the view's width (a narrow view cut "HELD (suspended in the debugger)" off at its edge).
+     */
+    private void drawOverlay(GL2 gl, int width, int height) {
         String text = overlay;
         if (text == null) {
             return;
@@ -258,19 +262,54 @@ public final class RobotScene implements AutoCloseable {
         if (glut == null) {
             glut = new GLUT();
         }
-        int w = glut.glutBitmapLength(GLUT.BITMAP_HELVETICA_18, text);
+        GLUT g = glut;
+        List<String> lines = wrap(text, width - 2 * OVERLAY_MARGIN, s -> g.glutBitmapLength(GLUT.BITMAP_HELVETICA_18, s));
+        int w = 0;
+        for (String line : lines) {
+            w = Math.max(w, g.glutBitmapLength(GLUT.BITMAP_HELVETICA_18, line));
+        }
         double mpp = camera.metresPerPixel();
         double x0 = camera.left(), y1 = camera.top();
+        int bandHeight = 8 + OVERLAY_LINE * lines.size();
         gl.glColor4f(1, 1, 1, 0.85f);
         gl.glBegin(GL2.GL_QUADS);
         gl.glVertex2d(x0, y1);
-        gl.glVertex2d(x0 + (w + 16) * mpp, y1);
-        gl.glVertex2d(x0 + (w + 16) * mpp, y1 - 30 * mpp);
-        gl.glVertex2d(x0, y1 - 30 * mpp);
+        gl.glVertex2d(x0 + (w + 2 * OVERLAY_MARGIN) * mpp, y1);
+        gl.glVertex2d(x0 + (w + 2 * OVERLAY_MARGIN) * mpp, y1 - bandHeight * mpp);
+        gl.glVertex2d(x0, y1 - bandHeight * mpp);
         gl.glEnd();
         gl.glColor4f(0.85f, 0.05f, 0.05f, 1);
-        gl.glWindowPos2d(8, height - 22);
-        glut.glutBitmapString(GLUT.BITMAP_HELVETICA_18, text);
+        for (int i = 0; i < lines.size(); i++) {
+            gl.glWindowPos2d(OVERLAY_MARGIN, height - OVERLAY_LINE * (i + 1));
+            g.glutBitmapString(GLUT.BITMAP_HELVETICA_18, lines.get(i));
+        }
+    }
+
+    /** Space left and right of the overlay's text, in pixels. */
+    private static final int OVERLAY_MARGIN = 8;
+    /** The overlay's line height, in pixels (Helvetica 18). */
+    private static final int OVERLAY_LINE = 22;
+
+    /**
+     * {@code text} in lines no wider than {@code maxWidth} (as {@code width} measures), broken at
+     * spaces; a word wider than that alone is a line of its own.
+     */
+    static List<String> wrap(String text, int maxWidth, ToIntFunction<String> width) {
+        List<String> lines = new ArrayList<>();
+        StringBuilder line = new StringBuilder();
+        for (String word : text.split(" ")) {
+            String candidate = line.isEmpty() ? word : line + " " + word;
+            if (line.isEmpty() || width.applyAsInt(candidate) <= maxWidth) {
+                line.setLength(0);
+                line.append(candidate);
+            } else {
+                lines.add(line.toString());
+                line.setLength(0);
+                line.append(word);
+            }
+        }
+        lines.add(line.toString());
+        return lines;
     }
 
     private static String label(double metres) {
