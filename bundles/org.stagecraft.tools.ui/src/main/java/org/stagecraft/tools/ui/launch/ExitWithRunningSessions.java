@@ -12,6 +12,7 @@ import org.eclipse.swt.widgets.Display;
 import org.eclipse.ui.IWorkbench;
 import org.eclipse.ui.IWorkbenchListener;
 import org.eclipse.ui.IWorkbenchWindow;
+import org.eclipse.ui.PlatformUI;
 
 /**
  * Exiting the IDE while Robot Sessions run: the user is asked (as Eclipse asks before exiting with
@@ -88,7 +89,7 @@ public final class ExitWithRunningSessions implements IWorkbenchListener {
 
     private static boolean ask(List<String> sessions) {
         Display display = Display.getCurrent();
-        IWorkbenchWindow window = org.eclipse.ui.PlatformUI.getWorkbench().getActiveWorkbenchWindow();
+        IWorkbenchWindow window = PlatformUI.getWorkbench().getActiveWorkbenchWindow();
         if (display == null) {
             return true;
         }
