@@ -90,6 +90,31 @@ public final class FieldPath {
         return aggregate;
     }
 
+    /** The field names along the path, e.g. [pos, px] for {@code pos.px}. */
+    public List<String> names() {
+        return steps.stream().map(Step::name).toList();
+    }
+
+    /** The last field name, e.g. "ranges" for {@code min(ranges)}. */
+    public String lastName() {
+        return steps.get(steps.size() - 1).name();
+    }
+
+    /**
+     * Every number the path reaches in {@code root}, ignoring the aggregate: the field itself, or the
+     * numeric elements of the lists it names ({@code bumpers}, {@code poses[*].px}); empty when the body
+     * has no such field.
+     */
+    public double[] numbers(Field root) {
+        List<Field> found = new ArrayList<>();
+        resolve(root, 0, found);
+        List<Double> values = new ArrayList<>();
+        for (Field f : found) {
+            numbers(f, values);
+        }
+        return values.stream().mapToDouble(Double::doubleValue).toArray();
+    }
+
     /** The number this path picks out of {@code body}; empty when the body has no such numeric field. */
     public OptionalDouble evaluate(MessageBody body) {
         return evaluate(FieldTree.of(body));

@@ -22,6 +22,8 @@ public final class HoldMarks {
     private final List<Long> injected = new ArrayList<>();
     private final List<Long> heldBack = new ArrayList<>();
     private final Set<Long> heldBackMessages = new HashSet<>();
+    private final List<Long> breaks = new ArrayList<>();
+    private final Set<Long> breakMessages = new HashSet<>();
 
     /** @param endNanos where a hold still on at the end of the log is drawn to */
     public HoldMarks(List<HoldEntry> entries, long endNanos) {
@@ -43,6 +45,13 @@ public final class HoldMarks {
                     }
                 }
                 case INJECTED -> injected.add(e.timeNanos());
+                case BREAK -> {
+                    breaks.add(e.timeNanos());
+                    breakMessages.add(key(e.conn(), e.programOffset()));
+                }
+                case PASSED_ON -> {
+                    // the end of what a BREAK held back: the BREAK is the mark
+                }
                 case HELD_BACK -> {
                     heldBack.add(e.timeNanos());
                     heldBackMessages.add(key(e.conn(), e.programOffset()));
@@ -71,6 +80,17 @@ public final class HoldMarks {
         return List.copyOf(heldBack);
     }
 
+    /** When robot data breakpoints held. */
+    public List<Long> breakTimes() {
+        return List.copyOf(breaks);
+    }
+
+    /** Whether this log message is a Player message on which a robot data breakpoint held. */
+    public boolean triggeredBreak(LogMessage m) {
+        return m.connection() != null && m.dir() == Direction.SERVER_TO_CLIENT
+                && breakMessages.contains(key(m.connection().id(), m.streamOffset()));
+    }
+
     /** Whether this log message is a program message the hold kept from Player. */
     public boolean heldBack(LogMessage m) {
         return m.connection() != null && m.dir() == Direction.CLIENT_TO_SERVER
@@ -78,7 +98,7 @@ public final class HoldMarks {
     }
 
     public boolean isEmpty() {
-        return spans.isEmpty() && injected.isEmpty() && heldBack.isEmpty();
+        return spans.isEmpty() && injected.isEmpty() && heldBack.isEmpty() && breaks.isEmpty();
     }
 
     private static long key(int conn, long offset) {

@@ -5,11 +5,13 @@ import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 
 /**
- * One thing a hold did to a connection's program-to-Player stream: a whole Player message it
- * injected (a zero-velocity command) or a whole message of the program's it held back. Published on
- * the stream bus ({@link HoldStreams}) and logged ({@link HoldEntry}).
+ * One thing a hold did to a connection: a whole Player message it injected (a zero-velocity command), a
+ * whole message of the program's it held back, or a robot data breakpoint's hit on a message from Player
+ * and the passing on of what it held back from the program. Published on the stream bus
+ * ({@link HoldStreams}) and logged ({@link HoldEntry}).
  *
- * @param kind           {@link HoldEntry.Action#INJECTED} or {@link HoldEntry.Action#HELD_BACK}
+ * @param kind           {@link HoldEntry.Action#INJECTED}, {@link HoldEntry.Action#HELD_BACK},
+ *                       {@link HoldEntry.Action#BREAK} or {@link HoldEntry.Action#PASSED_ON}
  * @param programOffset  offset in the program's stream: injected before the program's byte there;
  *                       held-back bytes start there
  * @param upstreamOffset offset in the stream Player receives

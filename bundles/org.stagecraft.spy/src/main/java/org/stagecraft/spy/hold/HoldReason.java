@@ -7,7 +7,9 @@ public enum HoldReason {
     /** The user pressed the emergency stop. */
     EMERGENCY_STOP("emergency stop"),
     /** The robot program went silent while its robot was moving. */
-    WATCHDOG("program silent while moving");
+    WATCHDOG("program silent while moving"),
+    /** A robot data breakpoint's condition held on a message from Player (docs/debugging-robots.md). */
+    DATA_BREAKPOINT("robot data breakpoint");
 
     private final String text;
 

@@ -1,9 +1,9 @@
 package org.stagecraft.spy.log;
 
 /**
- * Something Stagecraft itself did to a robot program's stream while a robot hold was on (see
- * docs/debugging-robots.md): bytes it injected towards Player, program bytes it held back, or the
- * hold switching on or off. These entries live on the log's own {@code /stagecraft/hold} channel, apart
+ * Something Stagecraft itself did to a robot program's streams while a robot hold was on (see
+ * docs/debugging-robots.md): bytes it injected towards Player, program bytes it held back, the
+ * hold switching on or off, or a robot data breakpoint holding Player's messages back from the program. These entries live on the log's own {@code /stagecraft/hold} channel, apart
  * from the wire channels, which keep recording exactly what the program sent; with both,
  * {@link SpyLogReader#upstreamBytes} rebuilds what Player received.
  *
@@ -27,7 +27,19 @@ public record HoldEntry(long timeNanos, int conn, int port, Action action, long 
         /** A hold began (text: the reasons). */
         HOLD_ON,
         /** The hold ended. */
-        HOLD_OFF
+        HOLD_OFF,
+        /**
+         * A robot data breakpoint held on the Player message at {@code programOffset} of the
+         * Player-to-program stream ({@code bytes}: that message; text: the breakpoint and its values). The
+         * message and what followed it were held back from the program until {@link #PASSED_ON}.
+         */
+        BREAK,
+        /**
+         * The Player messages held back since the {@link #BREAK} at {@code programOffset} went on to the
+         * program (text: after how long, and why). They are in the wire channel as always, with the time
+         * they were passed on.
+         */
+        PASSED_ON
     }
 
     public HoldEntry {

@@ -21,6 +21,8 @@ import java.util.concurrent.atomic.LongAdder;
 
 import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.spy.breakpoint.BreakpointGate;
+import org.stagecraft.spy.breakpoint.DataBreakpoints;
 import org.stagecraft.spy.hold.HoldAction;
 import org.stagecraft.spy.hold.HoldObserver;
 import org.stagecraft.spy.hold.HoldState;
@@ -75,6 +77,7 @@ public final class NetworkSpy implements AutoCloseable {
     private final java.util.concurrent.atomic.AtomicLong lastFailureReport = new java.util.concurrent.atomic.AtomicLong(Long.MIN_VALUE);
     private volatile boolean closed;
     private final RobotHold holds;
+    private final DataBreakpoints breakpoints;
 
     public NetworkSpy(List<Route> routes, WireObserver observer) {
         if (routes.isEmpty()) {
@@ -82,17 +85,28 @@ public final class NetworkSpy implements AutoCloseable {
         }
         this.routes = List.copyOf(routes);
         this.observer = observer;
-        this.holds = new RobotHold(new HoldObserver() {
+        HoldObserver holdObserver = new HoldObserver() {
             @Override
             public void action(HoldAction a) {
-                observe(() -> observer.holdAction(a, WallClock.nowNanos()));
+                observe(() -> NetworkSpy.this.observer.holdAction(a, WallClock.nowNanos()));
             }
 
             @Override
             public void state(HoldState s) {
-                observe(() -> observer.holdState(s, WallClock.nowNanos()));
+                observe(() -> NetworkSpy.this.observer.holdState(s, WallClock.nowNanos()));
             }
-        });
+        };
+        this.holds = new RobotHold(holdObserver);
+        this.breakpoints = new DataBreakpoints(holds, holdObserver);
+    }
+
+    /**
+     * Robot data breakpoints: stop when what Player sends satisfies a condition
+     * (docs/debugging-robots.md). Off unless enabled; then the Player-to-program direction is the plain
+     * byte copy.
+     */
+    public DataBreakpoints dataBreakpoints() {
+        return breakpoints;
     }
 
     /**
@@ -216,6 +230,7 @@ public final class NetworkSpy implements AutoCloseable {
         for (Relay r : relays) {
             r.abort("spy stopped");
         }
+        breakpoints.close();
         holds.close();
     }
 
@@ -246,6 +261,8 @@ public final class NetworkSpy implements AutoCloseable {
         final AtomicInteger running = new AtomicInteger(2);
         /** The message-aware program-to-Player path when holds were enabled at accept; else null. */
         volatile @Nullable HoldingForwarder holding;
+        /** The message-aware Player-to-program path when data breakpoints were enabled at accept; else null. */
+        volatile @Nullable BreakpointGate gate;
         volatile @Nullable String closeReason;
 
         Relay(Socket client, Route route) {
@@ -270,8 +287,10 @@ public final class NetworkSpy implements AutoCloseable {
             }
             try {
                 holding = holds.attach(info, upstream.getOutputStream());
+                gate = breakpoints.attach(info, client.getOutputStream());
             } catch (IOException e) {
-                holding = null; // the upstream is already gone: the pumps see it and end the connection
+                holding = null; // a side is already gone: the pumps see it and end the connection
+                gate = null;
             }
             startThread("spy-s2c-" + info.id(), () -> pump(upstream, client, Direction.SERVER_TO_CLIENT));
             pump(client, upstream, Direction.CLIENT_TO_SERVER);
@@ -345,6 +364,7 @@ public final class NetworkSpy implements AutoCloseable {
             byte[] buf = new byte[BUFFER];
             LongAdder counter = dir == Direction.CLIENT_TO_SERVER ? bytesC2S : bytesS2C;
             HoldingForwarder hold = dir == Direction.CLIENT_TO_SERVER ? holding : null;
+            BreakpointGate breaks = dir == Direction.SERVER_TO_CLIENT ? gate : null;
             try {
                 InputStream in = from.getInputStream();
                 OutputStream out = to.getOutputStream();
@@ -354,6 +374,9 @@ public final class NetworkSpy implements AutoCloseable {
                         if (hold != null) {
                             hold.end();
                         }
+                        if (breaks != null) {
+                            breaks.end();
+                        }
                         // orderly end of this direction: pass the half-close on
                         if (!to.isClosed()) {
                             to.shutdownOutput();
@@ -362,6 +385,8 @@ public final class NetworkSpy implements AutoCloseable {
                     }
                     if (hold != null) {
                         hold.relay(buf, 0, n); // whole messages only may be held or injected
+                    } else if (breaks != null) {
+                        breaks.relay(buf, 0, n); // may wait at a breakpoint's message until it is passed on
                     } else {
                         out.write(buf, 0, n);
                     }

@@ -3,7 +3,7 @@ package org.stagecraft.spy.proxy;
 import java.time.Instant;
 
 /** Receive timestamps: epoch nanoseconds, monotonic within a run (wall time at start + nanoTime). */
-final class WallClock {
+public final class WallClock {
     private static final long START_EPOCH_NANOS;
     private static final long START_NANO_TIME;
 
@@ -16,7 +16,7 @@ final class WallClock {
     private WallClock() {
     }
 
-    static long nowNanos() {
+    public static long nowNanos() {
         return START_EPOCH_NANOS + (System.nanoTime() - START_NANO_TIME);
     }
 }
