@@ -21,7 +21,7 @@ import org.stagecraft.spy.Cleanup;
  * stand-in Player that sends Player's side and keeps what it got, and a robot program that sends
  * the program's side and returns what it got. Both send as fast as the sockets take it.
  */
-final class RecordedSession {
+public final class RecordedSession {
     /** Peers block in socket reads: each gets a virtual thread (the common pool may have one worker). */
     static final Executor PEERS = Executors.newVirtualThreadPerTaskExecutor();
 
@@ -29,7 +29,7 @@ final class RecordedSession {
     }
 
     /** The two byte streams of connection 1 of a recording in the corpus: [0] program to Player, [1] back. */
-    static byte[][] streams(String trace) throws IOException {
+    public static byte[][] streams(String trace) throws IOException {
         ByteArrayOutputStream c2s = new ByteArrayOutputStream();
         ByteArrayOutputStream s2c = new ByteArrayOutputStream();
         try (TraceReader r = new TraceReader(TraceCorpus.file(trace))) {
