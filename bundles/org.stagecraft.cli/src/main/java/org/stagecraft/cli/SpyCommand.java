@@ -1,6 +1,7 @@
 package org.stagecraft.cli;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintStream;
 import java.net.InetSocketAddress;
 import java.nio.file.Path;
@@ -25,6 +26,8 @@ import org.stagecraft.foxglove.live.LiveScene;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.PlayerDecoder;
 import org.stagecraft.player.wire.Direction;
+import org.stagecraft.replay.fields.ConditionException;
+import org.stagecraft.replay.fields.StreamCondition;
 import org.stagecraft.spy.log.SpyLogWriter;
 import org.stagecraft.spy.proxy.LogRecorder;
 import org.stagecraft.spy.proxy.NetworkSpy;
@@ -39,12 +42,14 @@ import org.stagecraft.streams.StreamMessage;
  * {@code stagecraft spy --listen PORT --to HOST:PORT [...] [--bind ADDR] [--log FILE] [--foxglove [ADDR:]PORT]}:
  * the Network Spy without the IDE, e.g. on the robot's own computer. Prints a one-line summary every
  * second and stops cleanly on Ctrl-C, closing the log. With {@code --foxglove}, it also serves the live
- * streams to Foxglove or Lichtblick over the Foxglove WebSocket protocol (docs/foxglove.md).
+ * streams to Foxglove or Lichtblick over the Foxglove WebSocket protocol (docs/foxglove.md). With
+ * {@code --break}, robot data breakpoints: when a message from Player satisfies one, the robots are held,
+ * the hit is logged and printed, and Enter (or SIGUSR1) releases them (docs/debugging-robots.md).
  */
 final class SpyCommand {
     static final String USAGE = "usage: stagecraft spy --listen [HOST:]PORT --to HOST:PORT [--listen ... --to ...]"
             + " [--bind ADDR] [--log FILE] [--upstream-grace SECONDS] [--observation-wait SECONDS]"
-            + " [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]]";
+            + " [--foxglove [ADDR:]PORT [--foxglove-queue MESSAGES]] [--break 'DEVICE CONDITION' ... [--break-wait SECONDS]]";
 
     /** The live view's converter: the export's channels (Foxglove's schemas, and Player's own messages decoded). */
     static final Function<FoxgloveSink, Consumer<StreamMessage>> FOXGLOVE_SCENE = LiveScene.converter();
@@ -53,9 +58,16 @@ final class SpyCommand {
      * @param foxglove      where to serve the live view, or null for none
      * @param foxgloveQueue how many messages may wait for each viewer before new ones are dropped
      */
-    /** @param observationWait how long forwarding may wait for a stuck observation (0: best effort, never) */
+    /**
+     * @param observationWait how long forwarding may wait for a stuck observation (0: best effort, never)
+     * @param breaks          robot data breakpoints (empty: none, and the robots are never held)
+     * @param breakWait       how long a breakpoint's message waits before it goes on to the program
+     */
     record Options(List<Route> routes, @Nullable Path log, Duration upstreamGrace, @Nullable InetSocketAddress foxglove, int foxgloveQueue,
-            Duration observationWait) {
+            Duration observationWait, List<StreamCondition> breaks, Duration breakWait) {
+        Options {
+            breaks = List.copyOf(breaks);
+        }
     }
 
     /** Opens the spy log's writer (for tests: one on a disk that fills up). */
@@ -115,7 +127,7 @@ final class SpyCommand {
         }, "stagecraft-spy-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
         try {
-            status.set(serve(o, err, stop, System.console() != null));
+            status.set(serve(o, err, stop, System.console() != null, System.in));
             return status.get();
         } finally {
             cleanedUp.countDown();
@@ -132,7 +144,13 @@ final class SpyCommand {
      * on a terminal), then closes the spy, drains the pipeline and closes the log.
      */
     int serve(Options o, PrintStream err, CountDownLatch stop, boolean tty) {
+        return serve(o, err, stop, tty, InputStream.nullInputStream());
+    }
+
+    /** As {@link #serve(Options, PrintStream, CountDownLatch, boolean)}; a line on {@code keys} releases a breakpoint's hold. */
+    int serve(Options o, PrintStream err, CountDownLatch stop, boolean tty, InputStream keys) {
         NetworkSpy spy = new NetworkSpy(o.routes(), WireObserver.NONE).upstreamGrace(o.upstreamGrace());
+        BreakConsole breaks = o.breaks().isEmpty() ? null : new BreakConsole(spy, o.breaks(), o.breakWait(), err, tty);
         // Player refusing, or observation failing, is said at once, on its own line (after the live line on a terminal).
         SpyListener say = n -> err.print((tty ? "\n" : "") + "stagecraft spy: " + n.text() + (tty ? "" : "\n"));
         spy.addListener(say);
@@ -203,7 +221,10 @@ final class SpyCommand {
             err.println("serving Foxglove on " + live.server().uri()
                     + (o.foxglove().getAddress().isAnyLocalAddress() ? " (all interfaces)" : ""));
         }
-        Summary summary = new Summary(spy, pipeline, live);
+        if (breaks != null) {
+            breaks.start(keys);
+        }
+        Summary summary = new Summary(spy, pipeline, live, breaks);
         try {
             while (!stop.await(1, TimeUnit.SECONDS)) {
                 String line = summary.next();
@@ -258,6 +279,8 @@ final class SpyCommand {
         int foxgloveQueue = FoxgloveServer.DEFAULT_MAX_QUEUED_FRAMES;
         Duration grace = NetworkSpy.DEFAULT_UPSTREAM_GRACE;
         Duration observationWait = ObservationPipeline.DEFAULT_OBSERVATION_WAIT;
+        List<StreamCondition> breaks = new ArrayList<>();
+        Duration breakWait = Duration.ZERO;
         List<String> listens = new ArrayList<>();
         List<String> tos = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
@@ -275,6 +298,8 @@ final class SpyCommand {
                 case "--observation-wait" -> observationWait = seconds(a, v);
                 case "--foxglove" -> foxglove = v;
                 case "--foxglove-queue" -> foxgloveQueue = count(a, v);
+                case "--break" -> breaks.add(breakpoint(v));
+                case "--break-wait" -> breakWait = seconds(a, v);
                 default -> throw new IllegalArgumentException("unknown option " + a);
             }
         }
@@ -295,7 +320,15 @@ final class SpyCommand {
                 throw new IllegalArgumentException("--foxglove: " + e.getMessage(), e);
             }
         }
-        return new Options(routes, log, grace, live, foxgloveQueue, observationWait);
+        return new Options(routes, log, grace, live, foxgloveQueue, observationWait, breaks, breakWait);
+    }
+
+    private static StreamCondition breakpoint(String text) {
+        try {
+            return StreamCondition.parse(text, CodecRegistry.standard());
+        } catch (ConditionException e) {
+            throw new IllegalArgumentException("--break " + e.getMessage() + "\n  " + e.pointer().replace("\n", "\n  "), e);
+        }
     }
 
     private static int count(String option, String text) {
@@ -328,14 +361,16 @@ final class SpyCommand {
         private final NetworkSpy spy;
         private final ObservationPipeline pipeline;
         private final @Nullable Live live;
+        private final @Nullable BreakConsole breaks;
         private long lastMessages;
         private long lastBytes;
         private long lastNanos = System.nanoTime();
 
-        Summary(NetworkSpy spy, ObservationPipeline pipeline, @Nullable Live live) {
+        Summary(NetworkSpy spy, ObservationPipeline pipeline, @Nullable Live live, @Nullable BreakConsole breaks) {
             this.spy = spy;
             this.pipeline = pipeline;
             this.live = live;
+            this.breaks = breaks;
         }
 
         String next() {
@@ -344,11 +379,12 @@ final class SpyCommand {
             long messages = pipeline.messages();
             long bytes = spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT);
             String line = String.format(Locale.ROOT,
-                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s%s%s",
+                    "connections %d open/%d | %.0f msg/s | %.1f kB/s | undecodable %d msg | unframed %d B | unobserved %d B%s%s%s%s",
                     spy.openConnections(), spy.totalConnections(), (messages - lastMessages) / secs,
                     (bytes - lastBytes) / secs / 1000, pipeline.decodeProblems(), pipeline.unframedBytes(),
                     pipeline.droppedBytes(), failures(" | "), live != null ? " | " + live.summary(false) : "",
-                    pipeline.recorderError() != null ? " | " + pipeline.recorderError() : "");
+                    pipeline.recorderError() != null ? " | " + pipeline.recorderError() : "",
+                    breaks != null ? " | " + breaks.status() : "");
             lastMessages = messages;
             lastBytes = bytes;
             lastNanos = now;
@@ -358,12 +394,13 @@ final class SpyCommand {
         String totals() {
             return String.format(Locale.ROOT,
                     "%d connections, %d messages, %d bytes forwarded, %d undecodable messages, %d unframed bytes,"
-                            + " %d bytes unobserved%s%s%s",
+                            + " %d bytes unobserved%s%s%s%s",
                     spy.totalConnections(), pipeline.messages(),
                     spy.bytesForwarded(Direction.CLIENT_TO_SERVER) + spy.bytesForwarded(Direction.SERVER_TO_CLIENT),
                     pipeline.decodeProblems(), pipeline.unframedBytes(), pipeline.droppedBytes(), failures("; "),
                     live != null ? "; " + live.summary(true) : "",
-                    pipeline.recorderError() != null ? "; " + pipeline.recorderError() : "");
+                    pipeline.recorderError() != null ? "; " + pipeline.recorderError() : "",
+                    breaks != null ? "; " + breaks.totals() : "");
         }
 
         /**
