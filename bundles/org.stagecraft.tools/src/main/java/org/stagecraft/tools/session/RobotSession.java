@@ -215,13 +215,16 @@ public final class RobotSession implements AutoCloseable {
     }
 
     /**
-     * Before {@code start()}: holds only apply to connections accepted while they are enabled, and a robot
-     * program may connect the moment the spy listens.
+     * Before {@code start()}: holds and robot data breakpoints only apply to connections accepted while they
+     * are enabled, and a robot program may connect the moment the spy listens.
      */
     private static void configureHolds(NetworkSpy spy, SpyOptions options) {
         spy.upstreamGrace(options.upstreamGrace());
         spy.holds().setEnabled(options.holdsEnabled());
         spy.holds().setWatchdog(options.watchdog());
+        // a robot data breakpoint holds the robots, so it needs holdable connections too; with no breakpoint
+        // set its gate only follows the Player-to-program message boundaries, and holds nothing back
+        spy.dataBreakpoints().setEnabled(options.holdsEnabled());
     }
 
     /**
