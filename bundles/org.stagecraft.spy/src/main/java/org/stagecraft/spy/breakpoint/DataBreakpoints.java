@@ -198,8 +198,8 @@ public final class DataBreakpoints implements AutoCloseable {
                     return null; // another connection's hit came first, or the breakpoint went away
                 }
                 int n = counts.merge(b.id(), 1, Integer::sum);
-                if (b.hitCount() > 0 && n < b.hitCount()) {
-                    continue;
+                if (b.hitCount() > 0 && n != b.hitCount()) {
+                    continue; // before its Nth hit; after it, stopped once already (its owner may not have disabled it yet)
                 }
                 boolean disable = b.hitCount() > 0;
                 if (disable) {

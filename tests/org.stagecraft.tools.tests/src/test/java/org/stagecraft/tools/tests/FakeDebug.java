@@ -25,6 +25,8 @@ final class FakeDebug {
     final List<IThread> threads = new CopyOnWriteArrayList<>();
     /** Which threads say they are suspended (for a scan of a launch linked late). */
     final List<IThread> suspendedNow = new CopyOnWriteArrayList<>();
+    /** How often someone asked the target to suspend (it fires nothing itself: the test does). */
+    final java.util.concurrent.atomic.AtomicInteger suspendRequests = new java.util.concurrent.atomic.AtomicInteger();
 
     FakeDebug(int threadCount) {
         IDebugTarget[] t = new IDebugTarget[1];
@@ -32,7 +34,10 @@ final class FakeDebug {
                 () -> "debug", "toString", () -> "fake launch"));
         t[0] = fake(IDebugTarget.class, Map.of("getLaunch", () -> launch, "getDebugTarget", () -> t[0], "getThreads",
                 () -> threads.toArray(IThread[]::new), "hasThreads", () -> !threads.isEmpty(), "getModelIdentifier",
-                () -> "org.stagecraft.tests.fake", "toString", () -> "fake target"));
+                () -> "org.stagecraft.tests.fake", "toString", () -> "fake target", "canSuspend", () -> true, "suspend", () -> {
+                    suspendRequests.incrementAndGet();
+                    return null;
+                }));
         target = t[0];
         for (int i = 0; i < threadCount; i++) {
             IThread[] self = new IThread[1];

@@ -10,8 +10,10 @@ import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.hold.HoldListener;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.hold.RobotHold;
+import org.stagecraft.spy.proxy.NetworkSpy;
 import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.session.RobotSession;
+import org.stagecraft.tools.ui.breakpoints.SessionDataBreakpoints;
 import org.stagecraft.tools.ui.view.ToolsModel;
 
 /**
@@ -29,12 +31,15 @@ public final class SessionHolds implements AutoCloseable {
     private final SessionParts parts;
     private final RobotHold hold;
     private final @Nullable SuspendHold suspend;
+    private final @Nullable SessionDataBreakpoints dataBreakpoints;
     private final HoldListener toToolsView = this::show;
 
-    private SessionHolds(SessionParts parts, RobotHold hold, @Nullable SuspendHold suspend) {
+    private SessionHolds(SessionParts parts, RobotHold hold, @Nullable SuspendHold suspend,
+            @Nullable SessionDataBreakpoints dataBreakpoints) {
         this.parts = parts;
         this.hold = hold;
         this.suspend = suspend;
+        this.dataBreakpoints = dataBreakpoints;
     }
 
     /** Wires a session that has just started (its spy exists). */
@@ -43,7 +48,11 @@ public final class SessionHolds implements AutoCloseable {
         SuspendHold suspend = session.config().spy().holdWhenSuspended()
                 ? new SuspendHold(hold, parts::launches).start()
                 : null;
-        SessionHolds h = new SessionHolds(parts, hold, suspend);
+        NetworkSpy spy = Objects.requireNonNull(session.spy());
+        SessionDataBreakpoints data = spy.dataBreakpoints().isEnabled()
+                ? new SessionDataBreakpoints(spy.dataBreakpoints(), parts::launches, parts::spyConsole).start()
+                : null;
+        SessionHolds h = new SessionHolds(parts, hold, suspend, data);
         hold.addListener(h.toToolsView);
         RUNNING.put(parts, h);
         EmergencyStop.get().register(hold);
@@ -77,6 +86,11 @@ public final class SessionHolds implements AutoCloseable {
     /** The debugger listener, or null when the session's "hold while suspended" is off. */
     public @Nullable SuspendHold suspendHold() {
         return suspend;
+    }
+
+    /** The workbench's robot data breakpoints on this session's spy, or null when its holds are off. */
+    public @Nullable SessionDataBreakpoints dataBreakpoints() {
+        return dataBreakpoints;
     }
 
     /** A launch was linked to the session: its threads may already be suspended. */
@@ -114,6 +128,9 @@ public final class SessionHolds implements AutoCloseable {
         RUNNING.remove(parts);
         if (suspend != null) {
             suspend.close();
+        }
+        if (dataBreakpoints != null) {
+            dataBreakpoints.close();
         }
         hold.removeListener(toToolsView);
         EmergencyStop.get().unregister(hold);

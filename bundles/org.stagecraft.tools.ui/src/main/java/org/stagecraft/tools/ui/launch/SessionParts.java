@@ -165,6 +165,14 @@ public final class SessionParts implements ToolListener {
         return all;
     }
 
+    /** A line of Stagecraft's own in the spy's console, e.g. what a robot data breakpoint did. */
+    public void spyConsole(String line) {
+        SessionPartProcess p = spy;
+        if (p != null) {
+            p.stdout("[stagecraft] " + line);
+        }
+    }
+
     /** The session's robot hold in the IDE (null until the session runs). */
     public @Nullable SessionHolds holds() {
         return holds;
