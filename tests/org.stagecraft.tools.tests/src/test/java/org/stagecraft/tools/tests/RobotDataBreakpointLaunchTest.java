@@ -144,6 +144,7 @@ class RobotDataBreakpointLaunchTest {
         DataBreakpoints spy = parts.holds().dataBreakpoints().spy();
         assertTrue(await(() -> spy.breakpoints().size() == 1), "the session's spy has the workbench's breakpoint");
         spy.passOnBound(Duration.ofSeconds(60)); // here only the debugger's SUSPEND may pass the message on
+        parts.holds().dataBreakpoints().suspendSettle(Duration.ofSeconds(60));
         FakeDebug program = new FakeDebug(1);
         parts.link(program.launch);
 
@@ -177,6 +178,24 @@ class RobotDataBreakpointLaunchTest {
                 FakeDebug.event(program.threads.get(0), DebugEvent.RESUME, DebugEvent.CLIENT_REQUEST));
         assertNull(spy.current(), "Resume ends the hit");
         assertFalse(hold.reasons().containsKey(HoldReason.DATA_BREAKPOINT), hold.reasons().toString());
+
+        // a program that only stops once its read returns: the message goes on a settle time after the request
+        parts.holds().dataBreakpoints().suspendSettle(Duration.ofMillis(100));
+        spy.add(new org.stagecraft.spy.breakpoint.DataBreakpoint("again", spy.breakpoints().get(0).condition()));
+        CompletableFuture<ReplayPeer.Result> second = CompletableFuture.supplyAsync(() -> {
+            try {
+                return ReplayPeer.client(new Socket(InetAddress.getLoopbackAddress(), port), recorded);
+            } catch (IOException e) {
+                throw new RuntimeException(e);
+            }
+        });
+        assertTrue(await(() -> spy.current() != null && spy.current().passedOn()), "held, then passed on after the settle time");
+        assertTrue(spy.current().passedOnWhy().startsWith("the program was asked to suspend"), spy.current().passedOnWhy());
+        assertEquals(2, program.suspendRequests.get());
+        assertTrue(second.get(60, TimeUnit.SECONDS).matches());
+        FakeDebug.fire(FakeDebug.event(program.threads.get(0), DebugEvent.RESUME, DebugEvent.CLIENT_REQUEST));
+        assertNull(spy.current());
+        spy.remove("again");
 
         // disabling it in the Breakpoints view reaches the spy
         b.setEnabled(false);

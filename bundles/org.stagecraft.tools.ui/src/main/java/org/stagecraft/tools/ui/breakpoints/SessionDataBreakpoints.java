@@ -1,5 +1,6 @@
 package org.stagecraft.tools.ui.breakpoints;
 
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -26,9 +27,13 @@ import org.stagecraft.spy.breakpoint.DataBreakpoints;
 
 /**
  * The workbench's robot data breakpoints on one running Robot Session's spy, and what a hit does to its
- * robot program: every debug target of the session's launches is suspended; once one reports SUSPEND the
- * triggering message goes on to the program (so its next read returns exactly that message); the user's
- * Resume ends the hit (the robots move again, breakpoints are tested again). Steps do not end it: the
+ * robot program: every debug target of the session's launches is asked to suspend; once one reports SUSPEND,
+ * or {@link #suspendSettle} after the request, the triggering message goes on to the program, so its next
+ * read returns exactly that message. The settle time is there because a program waiting in a socket read
+ * cannot stop before the read returns: a Python debugger (pydevd) stops a thread at its next line of
+ * Python, so the message must go on once the request has reached the debugger, and the program stops right
+ * after its read, holding the message. The user's Resume ends the hit (the robots move again, breakpoints
+ * are tested again). Steps do not end it: the
  * robots stay held while the user steps through how the program handles the message. A program that is
  * not debugged cannot be suspended: the message goes on after the spy's bound, the robots stay held, and
  * the spy's console says so ({@link #resume()} and the Tools view's Resume Robots end it).
@@ -40,6 +45,10 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
     /** The hit waiting for the program to be suspended, or null. */
     private volatile @Nullable BreakpointHit waiting;
     private volatile @Nullable List<IDebugTarget> suspending;
+    private volatile Duration suspendSettle = DEFAULT_SUSPEND_SETTLE;
+
+    /** How long a suspend request is given to reach the program's debugger before the message goes on. */
+    public static final Duration DEFAULT_SUSPEND_SETTLE = Duration.ofMillis(250);
 
     /**
      * @param launches the session's launch and those linked to it, asked at each hit
@@ -82,6 +91,11 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
         return Long.toString(b.getMarker().getId());
     }
 
+    /** See {@link #DEFAULT_SUSPEND_SETTLE}; tests set a long one to see the SUSPEND event pass the message on. */
+    public void suspendSettle(Duration settle) {
+        suspendSettle = settle;
+    }
+
     /** The spy's breakpoints, for tests and the Tools view. */
     public DataBreakpoints spy() {
         return spy;
@@ -113,6 +127,7 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
         }
         waiting = hit;
         suspending = targets;
+        Duration settle = suspendSettle;
         Thread.ofVirtual().name("stagecraft-data-breakpoint-suspend").start(() -> {
             for (IDebugTarget t : targets) {
                 try {
@@ -120,6 +135,15 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
                 } catch (DebugException e) {
                     say.accept("could not suspend " + t + ": " + e.getMessage());
                 }
+            }
+            try {
+                Thread.sleep(settle); // a bound, not a synchronisation: a SUSPEND event passes the message on sooner
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            if (waiting == hit) {
+                waiting = null;
+                hit.passOn("the program was asked to suspend (it stops at its next line once its read returns)");
             }
         });
     }
