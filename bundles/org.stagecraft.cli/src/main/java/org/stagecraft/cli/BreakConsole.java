@@ -42,6 +42,7 @@ final class BreakConsole {
         spy.holds().setEnabled(true); // a hit holds the robots: connections must be holdable from the first
         breakpoints.setEnabled(true);
         breakpoints.passOnBound(wait);
+        breakpoints.untilFalse(true); // released, a robot must be able to drive away from what stopped it
         for (int i = 0; i < conditions.size(); i++) {
             breakpoints.add(new DataBreakpoint("--break " + (i + 1), conditions.get(i)));
         }
@@ -63,7 +64,7 @@ final class BreakConsole {
 
             @Override
             public void resumed(BreakpointHit h) {
-                say("released: the robots move again, breakpoints are tested again");
+                say("released: the robots move again; this breakpoint stops again once its condition has stopped holding");
             }
         });
     }

@@ -43,6 +43,9 @@ public final class DataBreakpoints implements AutoCloseable {
     private final List<DataBreakpoint> breakpoints = new ArrayList<>();
     private final Map<String, Integer> counts = new HashMap<>();
     private @Nullable BreakpointHit open;
+    /** Breakpoints resumed while their condition still held, in {@link #untilFalse} mode: not tested until it stops holding. */
+    private final java.util.Set<String> latched = new java.util.HashSet<>();
+    private boolean untilFalse;
     private volatile boolean armed;
     private volatile Duration passOnBound = DEFAULT_PASS_ON_BOUND;
 
@@ -79,6 +82,19 @@ public final class DataBreakpoints implements AutoCloseable {
         breakpoints.removeIf(x -> x.id().equals(id));
         counts.remove(id);
         rearm();
+    }
+
+    /**
+     * After {@link #resume()}, whether the breakpoint that stopped stops again only once its condition has
+     * stopped holding for a message (off: it stops at the next message that satisfies it, as Eclipse's
+     * breakpoints do). The command line turns it on: without a debugger to disable the breakpoint, a robot
+     * held at "nearer than 0.3 m" could otherwise never drive away.
+     */
+    public synchronized void untilFalse(boolean on) {
+        untilFalse = on;
+        if (!on) {
+            latched.clear();
+        }
     }
 
     public synchronized List<DataBreakpoint> breakpoints() {
@@ -122,6 +138,9 @@ public final class DataBreakpoints implements AutoCloseable {
                 return;
             }
             open = null;
+            if (untilFalse) {
+                latched.add(h.breakpoint().id());
+            }
             rearm();
         }
         h.passOn("resumed");
@@ -190,12 +209,18 @@ public final class DataBreakpoints implements AutoCloseable {
                 why = null; // a message the condition cannot read does not satisfy it
             }
             if (why == null) {
+                synchronized (this) {
+                    latched.remove(b.id()); // its condition stopped holding: it may stop again
+                }
                 continue;
             }
             BreakpointHit hit;
             synchronized (this) {
                 if (!armed || !breakpoints.contains(b)) {
                     return null; // another connection's hit came first, or the breakpoint went away
+                }
+                if (latched.contains(b.id())) {
+                    continue; // resumed while it held, and it still holds
                 }
                 int n = counts.merge(b.id(), 1, Integer::sum);
                 if (b.hitCount() > 0 && n != b.hitCount()) {
@@ -209,8 +234,9 @@ public final class DataBreakpoints implements AutoCloseable {
                 open = hit;
                 rearm();
             }
-            holds.hold(HoldReason.DATA_BREAKPOINT);
+            // the hit first, then what it did: the log reads BREAK, then the hold's zero commands
             report(new HoldAction(c, HoldEntry.Action.BREAK, offset, offset, h, message, hit.description()));
+            holds.hold(HoldReason.DATA_BREAKPOINT);
             for (BreakpointListener l : listeners) {
                 try {
                     l.hit(hit);

@@ -224,6 +224,45 @@ class BreakpointGateTest {
     }
 
     @Test
+    void untilFalseStopsAgainOnlyAfterTheConditionStoppedHolding() throws Exception {
+        byte[] s2c = RecordedSession.streams("pioneer-laser-sonar.gt.trace.jsonl")[1];
+        List<Long> close = closeScans(s2c, 1.0f);
+        // the first scan nearer than 1 m after one that was not: where an edge-triggered breakpoint stops again
+        List<Long> all = new ArrayList<>();
+        PlayerFramer f = new PlayerFramer(org.stagecraft.player.wire.Direction.SERVER_TO_CLIENT, e -> {
+            if (e instanceof org.stagecraft.player.wire.WireEvent.Frame fr && fr.header().interf() == Laser.CODE
+                    && fr.header().type() == 1 && DECODER.decode(fr.header(), fr.payload()).body() instanceof Laser.Scan) {
+                all.add(fr.offset());
+            }
+        });
+        f.accept(s2c);
+        long again = -1;
+        boolean wasFar = false;
+        for (long o : all) {
+            boolean near = close.contains(o);
+            if (o > close.get(0) && wasFar && near) {
+                again = o;
+                break;
+            }
+            wasFar = !near && o > close.get(0);
+        }
+        assertTrue(again > 0, "the recording goes near, away and near again");
+        DataBreakpoints bps = new DataBreakpoints(new RobotHold(HoldObserver.NONE), HoldObserver.NONE);
+        bps.setEnabled(true);
+        bps.passOnBound(Duration.ZERO);
+        bps.untilFalse(true);
+        bps.add(new DataBreakpoint("near", laserCloserThan(1.0f)));
+        List<Long> hits = new CopyOnWriteArrayList<>();
+        bps.addListener(h -> {
+            hits.add(h.offset());
+            bps.resume();
+        });
+        feed(bps.attach(CONN, new Downstream()), s2c, 9, 3000);
+        assertEquals(close.get(0), hits.get(0));
+        assertEquals(again, hits.get(1), "stopped again at the first near scan after a far one, not at the next near one");
+    }
+
+    @Test
     void offByDefaultAndArmedOnlyWithAnEnabledBreakpoint() throws IOException {
         DataBreakpoints bps = new DataBreakpoints(new RobotHold(HoldObserver.NONE), HoldObserver.NONE);
         assertEquals(null, bps.attach(CONN, new Downstream()), "off: the relay keeps its plain byte copy");

@@ -58,10 +58,6 @@ class RealDataBreakpointTest {
         return p;
     }
 
-    private static long want(PlayerStage.Program spy) {
-        return spy.count(l -> l.contains("released: the robots move again"));
-    }
-
     /** The first laser scan in Player's stream whose nearest return is nearer than {@code metres}: [offset, timestamp bits]. */
     private static long[] firstScanNearerThan(byte[] s2c, float metres) {
         PlayerDecoder d = new PlayerDecoder(CodecRegistry.standard());
@@ -98,43 +94,31 @@ class RealDataBreakpointTest {
 
         Map<String, String> env = new HashMap<>();
         env.put("PYTHONPATH", PlayerStage.pythonClient().resolve("src").toString());
+        // the program never stops by itself: headless Stage runs ahead of the program's reads, so the data Player has
+        // queued can show the robot nearer than it is once held; whether it stood still is read from the log below
         PlayerStage.Program wall = start("to_the_wall.py", List.of(PlayerStage.python(), "-u", PlayerStage.script("to_the_wall.py").toString(),
-                "--port", String.valueOf(spyPort), "--speed", "0.4", "--stop", "0.5", "--rounds", "3000"), env, null);
+                "--port", String.valueOf(spyPort), "--speed", "0.4", "--stop", "0", "--rounds", "1000000"), env, null);
         assertTrue(PlayerStage.await(WAIT, () -> spy.anyLine(l -> l.contains("BREAK robot data breakpoint"))),
                 "the breakpoint held:\n" + spy.output() + "\nthe program:\n" + wall.output());
         String hitLine = spy.lines.stream().filter(l -> l.contains("BREAK robot data breakpoint")).findFirst().orElseThrow();
         Matcher m = Pattern.compile("connection 1 at byte (\\d+) .*time ([0-9.]+)\\)").matcher(hitLine);
         assertTrue(m.find(), hitLine);
         long hitOffset = Long.parseLong(m.group(1));
-        // while held the program's commands are kept from Player and the robot stands: the program reads on,
-        // never nearer than 0.8 m... until Enter
-        assertTrue(PlayerStage.await(WAIT, () -> wall.count(l -> l.startsWith("scan ")) > 0), wall.output());
+        // held, the program reads on (its commands are kept from Player)
         long readBefore = wall.count(l -> l.startsWith("scan "));
-        assertTrue(PlayerStage.await(WAIT, () -> wall.count(l -> l.startsWith("scan ")) >= readBefore + 40),
-                "the program reads on while its robot is held:\n" + wall.output());
-        assertTrue(wall.process.isAlive() && !wall.anyLine(l -> l.equals("stopped")),
-                "the held robot did not reach 0.5 m from the wall:\n" + wall.output());
+        assertTrue(PlayerStage.await(WAIT, () -> wall.count(l -> l.startsWith("scan ")) >= readBefore + 60),
+                "the program reads on while its robot is held:\n" + wall.output() + "\nthe spy:\n" + spy.output());
 
-        // Enter releases; the next scan is nearer than 0.8 m too and holds again (a breakpoint holds on every message
-        // that satisfies it), so the test presses Enter at each hit until the program has driven to 0.5 m
+        // Enter releases; on the command line a breakpoint stops again only once its condition has stopped holding,
+        // so the robot drives on towards the wall
         OutputStream keys = spy.process.getOutputStream();
-        int presses = 0;
-        while (wall.process.isAlive() && presses < 100) {
-            long hits = spy.count(l -> l.contains("BREAK robot data breakpoint"));
-            long released = spy.count(l -> l.contains("released: the robots move again"));
-            if (hits > released) {
-                keys.write('\n');
-                keys.flush();
-                presses++;
-                long want = released + 1;
-                assertTrue(PlayerStage.await(WAIT, () -> spy.count(l -> l.contains("released: the robots move again")) >= want),
-                        spy.output());
-            } else {
-                PlayerStage.await(Duration.ofSeconds(5), () -> !wall.process.isAlive()
-                        || spy.count(l -> l.contains("BREAK robot data breakpoint")) > want(spy));
-            }
-        }
-        assertEquals(0, wall.awaitExit(WAIT), "released, the program drives on to 0.5 m from the wall:\n" + wall.output());
+        keys.write('\n');
+        keys.flush();
+        assertTrue(PlayerStage.await(WAIT, () -> spy.anyLine(l -> l.contains("released: the robots move again"))), spy.output());
+        long readAtRelease = wall.count(l -> l.startsWith("scan "));
+        assertTrue(PlayerStage.await(WAIT, () -> wall.count(l -> l.startsWith("scan ")) >= readAtRelease + 40), wall.output());
+        assertEquals(1, spy.count(l -> l.contains("BREAK robot data breakpoint")), "no second stop while still near:\n" + spy.output());
+        wall.close();
         spy.process.destroy(); // SIGTERM: the spy closes its log and exits
         assertEquals(0, spy.awaitExit(WAIT), spy.output());
 
@@ -166,12 +150,35 @@ class RealDataBreakpointTest {
                     }
                 }
             }
-            assertTrue(sentWhileHeld.size() >= 3, "the program kept commanding its robot while held: " + sentWhileHeld.size());
+            assertTrue(sentWhileHeld.size() >= 5, "the program kept commanding its robot while held: " + sentWhileHeld.size());
             for (long o : sentWhileHeld) {
                 assertTrue(heldBack.contains(o), "the motion command at byte " + o + " of the program's stream reached Player");
             }
+            // the robot stood while held: the last poses Player reported before the release agree within 1 mm, and
+            // after the release it moved
+            List<double[]> held = new ArrayList<>();
+            List<double[]> after = new ArrayList<>();
+            PlayerDecoder d = new PlayerDecoder(CodecRegistry.standard());
+            for (var it = r.entries(); it.hasNext();) {
+                if (it.next() instanceof LogEntry.Wire w && w.conn() == 1 && w.dir() == Direction.SERVER_TO_CLIENT
+                        && w.kind() == LogEntry.Kind.FRAME && w.timeNanos() > brk.timeNanos()) {
+                    MessageHeader h = MessageHeader.read(w.bytes(), 0);
+                    if (d.decode(h, java.util.Arrays.copyOfRange(w.bytes(), MessageHeader.SIZE, w.bytes().length)).body()
+                            instanceof Position2d.State st) {
+                        (w.timeNanos() < off.timeNanos() ? held : after).add(new double[] { st.pos().px(), st.pos().py() });
+                    }
+                }
+            }
+            assertTrue(held.size() >= 20, "poses while held: " + held.size());
+            double[] still = held.get(held.size() - 1);
+            double spread = held.subList(held.size() - 10, held.size()).stream()
+                    .mapToDouble(p -> Math.hypot(p[0] - still[0], p[1] - still[1])).max().orElseThrow();
+            assertTrue(spread <= 0.001, "the held robot stood still: the last 10 poses before the release within " + spread + " m");
+            double moved = after.stream().mapToDouble(p -> Math.hypot(p[0] - still[0], p[1] - still[1])).max().orElse(0);
+            assertTrue(moved > 0.005, "released, the robot drove on: " + moved + " m");
             System.out.println("RealDataBreakpointTest: held at byte " + hitOffset + " (scan time " + stamp + "), "
-                    + sentWhileHeld.size() + " motion commands held back until Enter");
+                    + sentWhileHeld.size() + " motion commands held back until Enter; the last 10 poses while held within " + spread
+                    + " m; " + moved + " m driven after the releases");
         }
     }
 
