@@ -129,6 +129,31 @@ class RealStageHoldTest {
                     time.sleep(0.01)  # sampling period (~20 Hz with Player's own turnaround); not a synchronisation
             """;
 
+    /** The data breakpoint's program: drives straight on at 0.4 m/s, writing down each laser scan it reads. */
+    private static final String TO_THE_WALL = """
+            import os
+            from stagecraft_player import Client
+            scans = open(os.environ["SCANS"], "a")
+            with Client("127.0.0.1", int(os.environ["ROBOT_PORT"])) as client:
+                robot = client.position2d("position2d:0")
+                laser = client.laser("laser:0")
+                robot.enable_motors(True)
+                while True:
+                    for m in client.read():
+                        if m.header.interf == 6 and m.header.type == 1 and hasattr(m.record, "ranges"):
+                            scans.write("scan %r %r\\n" % (m.header.timestamp, min(m.record.ranges)))
+                            scans.flush()
+                    robot.set_speed(0.4, 0.0)
+            """;
+    /** Puts r0 at a pose through Player's simulation interface (SET_POSE2D), then exits. */
+    private static final String TELEPORT = """
+            import sys
+            from stagecraft_player import Client
+            with Client("127.0.0.1", int(sys.argv[1])) as c:
+                c.simulation(0).set_pose2d("r0", float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4]))
+            print("MOVED", flush=True)
+            """;
+
     private static final List<String> REPORT = new CopyOnWriteArrayList<>();
     private static String python;
     private static Map<String, String> playerEnv;
@@ -288,6 +313,136 @@ class RealStageHoldTest {
         assertTrue(heldAt - silent >= 400 * MS && heldAt - silent < 800 * MS, "held by the watchdog ~500 ms after the silence began: " + line);
         assertTrue(stop.toStill < 0.3, "stopped, not driven on through the silence (driving on: 0.24 m at 0.8 s, 1.3 m at 4.3 s): " + line);
         assertTrue(stop.drift < 0.01, "still while silent: " + line);
+    }
+
+    /**
+     * Issue 27's robot data breakpoint on the real things: a program drives the Pioneer at a wall at 0.4 m/s reading
+     * the laser, with {@code laser:0 min(ranges) < 0.8} set in the workbench. Every run: the program is suspended, at
+     * the first scan nearer than 0.8 m (the scan before it on the wire was not), the program read exactly that scan,
+     * no motion command reached Player between the hit and Resume, and the robot stood still. Between runs, while
+     * suspended, the robot is put 1 m back along its path through Stage's simulation interface.
+     */
+    @Test
+    void aRobotDataBreakpointSuspendsTheProgramAtTheFirstScanNearerThan08mEveryRun() throws Exception {
+        int runs = 20;
+        Path scans = tmp.resolve("scans.txt");
+        write(project, "robot.py", TO_THE_WALL);
+        var breakpoint = org.stagecraft.tools.ui.breakpoints.RobotDataBreakpoint.create("laser:0 min(ranges) < 0.8", 0);
+        List<double[]> figures = new ArrayList<>(); // per run: hit -> SUSPEND ms, drift m, held-back commands
+        ILaunch launch;
+        try (DebugEvents events = new DebugEvents()) {
+            launch = launch(config(true, false, 500, Map.of("SCANS", scans.toString())), ILaunchManager.DEBUG_MODE);
+            SessionHolds holds = SessionHolds.of(launch);
+            assertNotNull(holds.dataBreakpoints(), "robot data breakpoints are on with the holds");
+            var spy = holds.dataBreakpoints().spy();
+            Await.until("the workbench's breakpoint on the session's spy", WAIT, () -> spy.breakpoints().size() == 1, () -> "");
+            Poses poses = poses(launch);
+            int moved = RobotSessionLaunchDelegate.partsOf(launch).session().portMap().values().iterator().next();
+            DebugEvent last = null;
+            for (int n = 1; n <= runs; n++) {
+                DebugEvent prev = last;
+                DebugEvent suspend = events.await("suspension #" + n + " at the robot data breakpoint", WAIT, e -> e != prev
+                        && e.getKind() == DebugEvent.SUSPEND && e.getSource() instanceof IThread
+                        && (prev == null || events.arrival(e)[0] > events.arrival(prev)[0]));
+                last = suspend;
+                long arrival = events.arrival(suspend)[0];
+                var hit = spy.current();
+                assertNotNull(hit, "suspended by the robot data breakpoint (run " + n + ")");
+                assertTrue(hit.passedOn(), "its message went on to the program: " + hit.passedOnWhy());
+                IThread thread = (IThread) suspend.getSource();
+                String where = thread.getTopStackFrame() == null ? "?" : thread.getTopStackFrame().getName();
+                poses.awaitSampleAfter(arrival + 1200 * MS);
+                Stop stop = poses.stopFrom(arrival, 200 * MS, 1200 * MS);
+                assertTrue(holds.hold().reasons().containsKey(HoldReason.DATA_BREAKPOINT), holds.hold().reasons().toString());
+                figures.add(new double[] { (arrival - hit.foundNanos()) / 1e6, stop.drift });
+                report(String.format(Locale.ROOT, "data breakpoint run %d: %s; message -> SUSPEND %.1f ms (passed on: %s); "
+                        + "drift while suspended (0.2-1.2 s) %.4f m; stopped in %s", n, hit.why(), (arrival - hit.foundNanos()) / 1e6,
+                        hit.passedOnWhy(), stop.drift, where));
+                assertTrue(stop.drift < 0.01, "the robot stood still while suspended: " + stop.drift + " m");
+                // 1 m back along the path, for the next run
+                Sample at = poses.at(arrival + 1200 * MS);
+                double heading = Math.toRadians(45);
+                Path teleport = Files.writeString(tmp.resolve("teleport.py"), TELEPORT);
+                Map<String, String> env = new HashMap<>();
+                env.put("PYTHONPATH", clientFolder());
+                Proc t = start("teleport", List.of(python, "-u", teleport.toString(), String.valueOf(moved),
+                        String.valueOf(at.x() - Math.cos(heading)), String.valueOf(at.y() - Math.sin(heading)), String.valueOf(heading)), env);
+                Await.until("the robot to be put back", WAIT, () -> t.lines.contains("MOVED"), t::output);
+                // as a user would: disabled while the program reads what Player queued before the robot was put back,
+                // enabled again once it drives from its new place
+                breakpoint.setEnabled(false);
+                Await.until("the breakpoint disabled on the spy", WAIT, () -> !spy.breakpoints().get(0).enabled(), () -> "");
+                long resumed = System.nanoTime();
+                thread.resume();
+                Await.until("the hit to end on Resume", WAIT, () -> spy.current() == null, () -> String.valueOf(spy.current()));
+                Sample back = new Sample(resumed, at.x() - Math.cos(heading), at.y() - Math.sin(heading));
+                poses.awaitMovedAfter(resumed, back, 0.1);
+                breakpoint.setEnabled(true);
+                Await.until("the breakpoint enabled on the spy", WAIT, () -> spy.breakpoints().get(0).enabled(), () -> "");
+            }
+            SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
+            launch.terminate();
+            Await.until("the session to end", WAIT, () -> launch.isTerminated() && parts.session().isClosed(), () -> "");
+            checkDataBreakpointsInTheLog(runs, Files.readString(scans));
+        }
+        double[] ms = figures.stream().mapToDouble(f -> f[0]).sorted().toArray();
+        report(String.format(Locale.ROOT, "data breakpoint: %d of %d runs suspended at the first scan nearer than 0.8 m; message at the spy "
+                + "-> SUSPEND p50 %.1f ms, p99 %.1f ms, max %.1f ms", runs, runs, ms[ms.length / 2],
+                ms[Math.min(ms.length - 1, (int) Math.ceil(ms.length * 0.99) - 1)], ms[ms.length - 1]));
+    }
+
+    /** From the spy log: each hit at the first scan below 0.8 m, read by the program, and nothing moved the robot meanwhile. */
+    private void checkDataBreakpointsInTheLog(int runs, String programOut) throws IOException {
+        Path logs = project.getLocation().toPath().resolve("logs");
+        List<Path> files;
+        try (Stream<Path> s = Files.list(logs)) {
+            files = s.filter(p -> p.toString().endsWith(".mcap")).toList();
+        }
+        assertEquals(1, files.size(), "one spy log: " + files);
+        try (SpyLogReader r = SpyLogReader.open(files.get(0))) {
+            List<HoldEntry> holds = r.holdEntries();
+            List<HoldEntry> breaks = holds.stream().filter(e -> e.action() == HoldEntry.Action.BREAK).toList();
+            assertEquals(runs, breaks.size(), "one hit per run");
+            var decoder = new org.stagecraft.player.codec.PlayerDecoder(org.stagecraft.player.codec.CodecRegistry.standard());
+            // every laser scan on the program's connection: offset -> [nearest, timestamp]
+            java.util.TreeMap<Long, double[]> scans = new java.util.TreeMap<>();
+            List<long[]> commands = new ArrayList<>(); // [time, offset] of the program's motion commands
+            for (var it = r.entries(); it.hasNext();) {
+                if (it.next() instanceof org.stagecraft.spy.log.LogEntry.Wire w && w.kind() == org.stagecraft.spy.log.LogEntry.Kind.FRAME
+                        && w.conn() == breaks.get(0).conn()) {
+                    var h = org.stagecraft.player.wire.MessageHeader.read(w.bytes(), 0);
+                    byte[] payload = Arrays.copyOfRange(w.bytes(), org.stagecraft.player.wire.MessageHeader.SIZE, w.bytes().length);
+                    if (w.dir() == org.stagecraft.player.wire.Direction.SERVER_TO_CLIENT && h.interf() == 6 && h.type() == 1
+                            && decoder.decode(h, payload).body() instanceof org.stagecraft.player.msg.Laser.Scan scan) {
+                        float min = Float.POSITIVE_INFINITY;
+                        for (float f : scan.ranges().toArray()) {
+                            min = Math.min(min, f);
+                        }
+                        scans.put(w.streamOffset(), new double[] { min, h.timestamp() });
+                    } else if (w.dir() == org.stagecraft.player.wire.Direction.CLIENT_TO_SERVER && h.interf() == 4 && h.type() == 2) {
+                        commands.add(new long[] { w.timeNanos(), w.streamOffset() });
+                    }
+                }
+            }
+            java.util.Set<Long> heldBack = new java.util.HashSet<>();
+            holds.stream().filter(e -> e.action() == HoldEntry.Action.HELD_BACK).forEach(e -> heldBack.add(e.programOffset()));
+            for (HoldEntry b : breaks) {
+                double[] hit = scans.get(b.programOffset());
+                assertNotNull(hit, "the hit is a laser scan at " + b.programOffset());
+                assertTrue(hit[0] < 0.8, "below 0.8 m: " + hit[0]);
+                var before = scans.lowerEntry(b.programOffset());
+                assertTrue(before != null && before.getValue()[0] >= 0.8, "the scan before it was not below 0.8 m: "
+                        + (before == null ? "none" : before.getValue()[0]));
+                assertTrue(programOut.contains("scan " + hit[1] + " "), "the program read the triggering scan (time " + hit[1] + ")");
+                HoldEntry off = holds.stream().filter(e -> e.action() == HoldEntry.Action.HOLD_OFF && e.timeNanos() > b.timeNanos())
+                        .findFirst().orElseThrow();
+                for (long[] c : commands) {
+                    if (c[0] > b.timeNanos() && c[0] < off.timeNanos()) {
+                        assertTrue(heldBack.contains(c[1]), "no motion command reached Player between the hit and Resume: byte " + c[1]);
+                    }
+                }
+            }
+        }
     }
 
     // ------------------------------------------------------------------------------------------ suspension
