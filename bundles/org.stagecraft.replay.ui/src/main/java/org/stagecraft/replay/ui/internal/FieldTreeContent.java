@@ -56,6 +56,11 @@ public final class FieldTreeContent implements ITreeContentProvider {
     record Element(int index, Field field) {
     }
 
+    /** The field a row shows (a list element's too), or null. */
+    public static @Nullable Field fieldOf(@Nullable Object element) {
+        return element == null ? null : field(element);
+    }
+
     private static @Nullable Field field(Object element) {
         return element instanceof Element e ? e.field() : element instanceof Field f ? f : null;
     }

@@ -131,10 +131,50 @@ public final class InspectorPanel {
         value.getColumn().setWidth(160);
         value.setLabelProvider(ColumnLabelProvider.createTextProvider(FieldTreeContent::value));
         fields.setContentProvider(new FieldTreeContent());
+        fields.getTree().setMenu(breakpointMenu());
         hex = new Text(detail, SWT.MULTI | SWT.READ_ONLY | SWT.V_SCROLL | SWT.H_SCROLL | SWT.BORDER);
         hex.setFont(JFaceResources.getTextFont());
         detail.setWeights(55, 45);
         split.setWeights(62, 38);
+    }
+
+    /** The fields' context menu: a robot data breakpoint on the field, starting from the value it has here. */
+    private org.eclipse.swt.widgets.Menu breakpointMenu() {
+        org.eclipse.swt.widgets.Menu menu = new org.eclipse.swt.widgets.Menu(fields.getTree());
+        org.eclipse.swt.widgets.MenuItem add = new org.eclipse.swt.widgets.MenuItem(menu, SWT.PUSH);
+        add.setText("Add Robot Data Breakpoint...");
+        menu.addListener(SWT.Show, e -> add.setEnabled(breakpointText() != null));
+        add.addListener(SWT.Selection, e -> {
+            String text = breakpointText();
+            if (text != null) {
+                AddDataBreakpoint.ask(text, status);
+            }
+        });
+        return menu;
+    }
+
+    /**
+     * The robot data breakpoint offered for the selected field ({@code laser:0 min(ranges) < 0.287}), or null: only
+     * messages from Player can stop a program, and only fields that hold numbers.
+     */
+    public @Nullable String breakpointText() {
+        LogMessage m = detailed;
+        org.eclipse.swt.widgets.TreeItem[] sel = fields.getTree().getSelection();
+        if (m == null || m.decoded() == null || m.dir() != org.stagecraft.player.wire.Direction.SERVER_TO_CLIENT || sel.length != 1) {
+            return null;
+        }
+        java.util.ArrayDeque<String> names = new java.util.ArrayDeque<>();
+        for (org.eclipse.swt.widgets.TreeItem i = sel[0]; i != null; i = i.getParentItem()) {
+            names.push(String.valueOf(FieldTreeContent.name(i.getData())));
+        }
+        StringBuilder path = new StringBuilder();
+        for (String n : names) {
+            path.append(n.startsWith("[") || path.isEmpty() ? "" : ".").append(n);
+        }
+        org.stagecraft.replay.fields.Field f = FieldTreeContent.fieldOf(sel[0].getData());
+        org.stagecraft.player.wire.MessageHeader h = m.decoded().header();
+        String iface = org.stagecraft.core.extensions.Contributions.workbench().codecs().interfaceName(h.interf());
+        return f == null || iface == null ? null : org.stagecraft.replay.fields.BreakpointText.of(iface, h, path.toString(), f);
     }
 
     public Composite control() {

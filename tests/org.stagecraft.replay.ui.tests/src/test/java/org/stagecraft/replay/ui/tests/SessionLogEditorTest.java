@@ -267,6 +267,29 @@ class SessionLogEditorTest {
         assertTrue(e.inspector().statusText().contains("dev=laser"), e.inspector().statusText());
     }
 
+    @Test
+    void aFieldOfAMessageFromPlayerOffersARobotDataBreakpointThatReads() throws Exception {
+        SessionLogEditor e = open(page, TestLogs.spyLog("break-offer.mcap", 64 << 10));
+        waitForInspector(e);
+        e.inspector().setFilter("position2d:0", "");
+        Ui.spinUntil(() -> !e.inspector().window().isEmpty() && e.inspector().filter().patternText().equals("position2d:0")
+                && e.inspector().window().rows().stream().allMatch(r -> e.columns().device(r.message()).equals("position2d:0")),
+                30_000, "the filtered window");
+        e.inspector().selectRow(15);
+        org.eclipse.swt.widgets.Tree tree = e.inspector().fields().getTree();
+        e.inspector().fields().expandAll();
+        org.eclipse.swt.widgets.TreeItem pos = java.util.Arrays.stream(tree.getItems()).filter(i -> i.getText(0).equals("pos"))
+                .findFirst().orElseThrow();
+        org.eclipse.swt.widgets.TreeItem px = java.util.Arrays.stream(pos.getItems()).filter(i -> i.getText(0).equals("px"))
+                .findFirst().orElseThrow();
+        tree.setSelection(px);
+        String text = e.inspector().breakpointText();
+        assertTrue(text != null && text.startsWith("position2d:0 pos.px < "), text);
+        org.stagecraft.replay.fields.StreamCondition.parse(text, org.stagecraft.player.codec.CodecRegistry.standard());
+        tree.setSelection(pos);
+        assertEquals(null, e.inspector().breakpointText(), "a struct holds no number");
+    }
+
     private static int countHexBytes(String dump) {
         int n = 0;
         for (String line : dump.split("\n")) {
