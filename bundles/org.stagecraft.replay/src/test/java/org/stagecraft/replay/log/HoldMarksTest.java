@@ -48,6 +48,28 @@ class HoldMarksTest {
     }
 
     @Test
+    void robotDataBreakpointHitsMarkTheirMessageFromPlayer() throws Exception {
+        HoldMarks m = new HoldMarks(List.of(e(100, 1, Action.BREAK, 5000, "robot data breakpoint: laser:0 min(ranges) < 0.3"),
+                e(101, 0, Action.HOLD_ON, 0, "robot data breakpoint"), e(120, 1, Action.PASSED_ON, 5000, "after 20 ms")), 400);
+        assertEquals(List.of(100L), m.breakTimes());
+        assertTrue(m.triggeredBreak(program(1, Direction.SERVER_TO_CLIENT, 5000)));
+        assertFalse(m.triggeredBreak(program(1, Direction.CLIENT_TO_SERVER, 5000)), "the program's own stream");
+        assertFalse(m.triggeredBreak(program(1, Direction.SERVER_TO_CLIENT, 5048)), "the message after it");
+        assertFalse(m.isEmpty());
+        // written and read back: the log's hold channel keeps the new actions
+        Path file = tmp.resolve("break.mcap");
+        try (SpyLogWriter w = SpyLogWriter.create(file, Map.of())) {
+            w.connectionOpened(1_000, 1, "127.0.0.1:40000", "127.0.0.1:6665", "127.0.0.1:7665");
+            w.hold(e(2_000, 1, Action.BREAK, 5000, "robot data breakpoint"));
+            w.hold(e(3_000, 1, Action.PASSED_ON, 5000, "passed on"));
+            w.connectionClosed(4_000, 1, "done");
+        }
+        try (SessionLog log = SessionLogs.open(file)) {
+            assertEquals(List.of(Action.BREAK, Action.PASSED_ON), log.holdEntries().stream().map(HoldEntry::action).toList());
+        }
+    }
+
+    @Test
     void aSpyLogsHoldEntriesReachTheSessionLog() throws Exception {
         Path file = tmp.resolve("held.mcap");
         try (SpyLogWriter w = SpyLogWriter.create(file, Map.of())) {

@@ -55,6 +55,7 @@ public final class InspectorPanel {
     private final Color marked = new Color(255, 222, 222);
     /** The robot hold's colour (as on the timeline): program messages held back from Player. */
     private final Color heldBack = new Color(226, 214, 248);
+    private final Color breakpointHit = new Color(255, 205, 205);
     private volatile HoldMarks holds = HoldMarks.none();
     private @Nullable SharedLog shared;
     private @Nullable SessionLog log;
@@ -393,9 +394,15 @@ public final class InspectorPanel {
         if (held) {
             cells[7] = "[held back from Player by the robot hold] " + cells[7];
         }
+        boolean broke = holds.triggeredBreak(row.message());
+        if (broke) {
+            cells[7] = "[a robot data breakpoint stopped here] " + cells[7];
+        }
         item.setText(cells);
         if (row.marked()) {
             item.setBackground(marked);
+        } else if (broke) {
+            item.setBackground(breakpointHit);
         } else if (held) {
             item.setBackground(heldBack);
         }
@@ -407,6 +414,11 @@ public final class InspectorPanel {
         if (!table.isDisposed()) {
             table.clearAll();
         }
+    }
+
+    /** Whether row {@code index} is shown as the message a robot data breakpoint stopped at (for tests). */
+    public boolean rowTriggeredBreak(int index) {
+        return index >= 0 && index < window.rows().size() && holds.triggeredBreak(window.rows().get(index).message());
     }
 
     /** Whether row {@code index} is shown as held back (for tests). */

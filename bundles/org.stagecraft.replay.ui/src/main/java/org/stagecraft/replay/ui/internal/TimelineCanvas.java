@@ -204,8 +204,12 @@ public final class TimelineCanvas {
         return 10 * p;
     }
 
-    /** Lavender band while held (under the other marks), a violet tick per injected zero command, a lighter one per held-back message. */
-    static final int[] HOLD_BAND = { 226, 214, 248 }, INJECTED = { 120, 40, 200 }, HELD_BACK = { 170, 130, 230 };
+    /**
+     * Lavender band while held (under the other marks), a violet tick per injected zero command, a lighter one per
+     * held-back message, a red one the whole height of the row where a robot data breakpoint stopped.
+     */
+    static final int[] HOLD_BAND = { 226, 214, 248 }, INJECTED = { 120, 40, 200 }, HELD_BACK = { 170, 130, 230 },
+            BREAK = { 210, 30, 30 };
 
     private void drawHolds(GC gc, int y) {
         if (holds.isEmpty()) {
@@ -223,6 +227,10 @@ public final class TimelineCanvas {
         gc.setForeground(new Color(INJECTED[0], INJECTED[1], INJECTED[2]));
         for (long t : holds.injectedTimes()) {
             gc.drawLine(xOf(t), y, xOf(t), y + MARKS / 2);
+        }
+        gc.setForeground(new Color(BREAK[0], BREAK[1], BREAK[2]));
+        for (long t : holds.breakTimes()) {
+            gc.drawLine(xOf(t), y, xOf(t), y + MARKS - 1);
         }
     }
 
