@@ -45,33 +45,6 @@ class SpyBreakTest {
     @TempDir
     Path tmp;
 
-    /** stderr, waited on line by line. */
-    private static final class Lines extends ByteArrayOutputStream {
-        synchronized String text() {
-            return toString(StandardCharsets.UTF_8);
-        }
-
-        Matcher await(Pattern p, long timeoutMs) throws InterruptedException {
-            long deadline = System.currentTimeMillis() + timeoutMs;
-            while (System.currentTimeMillis() < deadline) {
-                Matcher m = p.matcher(text());
-                if (m.find()) {
-                    return m;
-                }
-                synchronized (this) {
-                    wait(50); // woken by write(); the timeout only bounds a missed notify
-                }
-            }
-            throw new AssertionError("no line matching " + p + " in:\n" + text());
-        }
-
-        @Override
-        public synchronized void write(byte[] b, int off, int len) {
-            super.write(b, off, len);
-            notifyAll();
-        }
-    }
-
     /** The offset of the first laser scan nearer than {@code metres} in Player's stream, by the framer and the typed scan. */
     private static long firstScanNearerThan(byte[] s2c, float metres) {
         PlayerDecoder d = new PlayerDecoder(CodecRegistry.standard());
@@ -96,7 +69,7 @@ class SpyBreakTest {
         RecordedConnection rc = RecordedConnection.read(TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl")).get(0);
         long expected = firstScanNearerThan(rc.serverBytes(), 1.0f);
         Path log = tmp.resolve("break.mcap");
-        Lines err = new Lines();
+        PrintedLines err = new PrintedLines();
         CountDownLatch stop = new CountDownLatch(1);
         PipedOutputStream keys = new PipedOutputStream();
         PipedInputStream keysIn = new PipedInputStream(keys);
@@ -107,11 +80,11 @@ class SpyBreakTest {
                     "--log", log.toString(), "--break", "laser:0 min(ranges) < 1.0" });
             Future<Integer> spy = threads.submit(() -> new SpyCommand().serve(o, new PrintStream(err, true, StandardCharsets.UTF_8),
                     stop, false, keysIn));
-            int port = Integer.parseInt(err.await(Pattern.compile("spying 127\\.0\\.0\\.1:(\\d+) -> "), 20_000).group(1));
+            int port = Integer.parseInt(err.await(Pattern.compile("spying 127\\.0\\.0\\.1:(\\d+) -> "), 20_000));
 
             ReplayPeer.Result program = ReplayPeer.client(new Socket(InetAddress.getLoopbackAddress(), port), rc);
             assertTrue(program.matches(), "the program's bytes differ at " + program.firstDifference());
-            Matcher hit = err.await(Pattern.compile("BREAK robot data breakpoint: laser:0 min\\(ranges\\) < 1\\.0 \\(laser:0 min\\(ranges\\) = "
+            Matcher hit = err.awaitMatch(Pattern.compile("BREAK robot data breakpoint: laser:0 min\\(ranges\\) < 1\\.0 \\(laser:0 min\\(ranges\\) = "
                     + "([0-9.]+) m < 1\\.0\\), connection 1 at byte (\\d+) "), 20_000);
             assertEquals(expected, Long.parseLong(hit.group(2)), err.text());
             assertTrue(Double.parseDouble(hit.group(1)) < 1.0, hit.group());

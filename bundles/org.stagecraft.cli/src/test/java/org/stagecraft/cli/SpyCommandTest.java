@@ -49,38 +49,11 @@ class SpyCommandTest {
     @TempDir
     Path tmp;
 
-    /** A stream that lets the test wait for a line the command prints. */
-    private static final class Lines extends ByteArrayOutputStream {
-        synchronized String text() {
-            return toString(StandardCharsets.UTF_8);
-        }
-
-        String await(Pattern p, long timeoutMs) throws InterruptedException {
-            long deadline = System.currentTimeMillis() + timeoutMs;
-            while (System.currentTimeMillis() < deadline) {
-                Matcher m = p.matcher(text());
-                if (m.find()) {
-                    return m.group(1);
-                }
-                synchronized (this) {
-                    wait(50); // woken by write(); the timeout only bounds a missed notify
-                }
-            }
-            throw new AssertionError("no line matching " + p + " in:\n" + text());
-        }
-
-        @Override
-        public synchronized void write(byte[] b, int off, int len) {
-            super.write(b, off, len);
-            notifyAll();
-        }
-    }
-
     @Test
     void relaysARecordedSessionLogsItAndStopsCleanly() throws Exception {
         RecordedConnection rc = RecordedConnection.read(TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl")).get(0);
         Path log = tmp.resolve("session.mcap");
-        Lines err = new Lines();
+        PrintedLines err = new PrintedLines();
         CountDownLatch stop = new CountDownLatch(1);
         try (ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();
                 ServerSocket player = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
@@ -143,7 +116,7 @@ class SpyCommandTest {
     void aFullDiskStopsTheLogAndTheFinalLineSaysWhatWasRelayedButIsNotInIt() throws Exception {
         RecordedConnection rc = RecordedConnection.read(TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl")).get(0);
         Path log = tmp.resolve("full.mcap");
-        Lines err = new Lines();
+        PrintedLines err = new PrintedLines();
         CountDownLatch stop = new CountDownLatch(1);
         // 8 KiB chunks on a disk with room for 30 kB: the disk fills in the middle of the session
         SpyCommand.LogOpener smallDisk = (file, meta) -> SpyLogWriter.create(new FullDisk(FileChannel.open(file,
@@ -230,7 +203,7 @@ class SpyCommandTest {
     void aPortInUseIsReportedAndNothingKeepsRunning() throws Exception {
         try (ServerSocket taken = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
             SpyCommand.Options o = SpyCommand.parse(new String[] {"--listen", String.valueOf(taken.getLocalPort()), "--to", "7665"});
-            Lines err = new Lines();
+            PrintedLines err = new PrintedLines();
             int code = new SpyCommand().serve(o, new PrintStream(err, true, StandardCharsets.UTF_8), new CountDownLatch(1), false);
             assertEquals(1, code);
             assertTrue(err.text().contains("cannot listen on 127.0.0.1:" + taken.getLocalPort()), err.text());
@@ -238,7 +211,7 @@ class SpyCommandTest {
         }
     }
 
-    private int serveOnce(Lines err, String... args) {
+    private int serveOnce(PrintedLines err, String... args) {
         return new SpyCommand().serve(SpyCommand.parse(args), new PrintStream(err, true, StandardCharsets.UTF_8),
                 new CountDownLatch(1), false);
     }
@@ -248,32 +221,32 @@ class SpyCommandTest {
         try (ServerSocket taken = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
             String port = String.valueOf(taken.getLocalPort());
             Path fresh = tmp.resolve("fresh.mcap");
-            assertEquals(1, serveOnce(new Lines(), "--listen", port, "--to", "7665", "--log", fresh.toString()));
+            assertEquals(1, serveOnce(new PrintedLines(), "--listen", port, "--to", "7665", "--log", fresh.toString()));
             assertFalse(Files.exists(fresh), "no empty log is left behind");
 
             Path old = tmp.resolve("old.mcap");
             Files.writeString(old, "yesterday's session");
-            assertEquals(1, serveOnce(new Lines(), "--listen", port, "--to", "7665", "--log", old.toString()));
+            assertEquals(1, serveOnce(new PrintedLines(), "--listen", port, "--to", "7665", "--log", old.toString()));
             assertEquals("yesterday's session", Files.readString(old));
         }
     }
 
     @Test
     void aLogThatCannotBeWrittenSaysWhy() throws Exception {
-        Lines err = new Lines();
+        PrintedLines err = new PrintedLines();
         Path missing = tmp.resolve("no-such-folder").resolve("s.mcap");
         assertEquals(1, serveOnce(err, "--listen", "0", "--to", "7665", "--log", missing.toString()));
         assertTrue(err.text().contains("cannot write the log " + missing + ": no such folder " + missing.getParent()),
                 err.text());
 
-        Lines err2 = new Lines();
+        PrintedLines err2 = new PrintedLines();
         assertEquals(1, serveOnce(err2, "--listen", "0", "--to", "7665", "--log", tmp.toString()));
         assertTrue(err2.text().contains("cannot write the log " + tmp + ": it is a folder"), err2.text());
     }
 
     @Test
     void anAddressOfAnotherMachineIsSaidToBeOne() {
-        Lines err = new Lines();
+        PrintedLines err = new PrintedLines();
         // 192.0.2.1: TEST-NET-1 (RFC 5737), like 8.8.8.8 never an address of this machine
         assertEquals(1, serveOnce(err, "--listen", "0", "--to", "7665", "--bind", "192.0.2.1"));
         assertTrue(err.text().contains("cannot listen on 192.0.2.1:0 (192.0.2.1 is not an address of this machine"),
@@ -288,8 +261,8 @@ class SpyCommandTest {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> SpyCommand.parse(args));
             assertTrue(e.getMessage().contains("leads back to the spy itself"), e.getMessage());
         }
-        Lines err = new Lines();
-        Lines out = new Lines();
+        PrintedLines err = new PrintedLines();
+        PrintedLines out = new PrintedLines();
         assertEquals(2, new SpyCommand().run(new String[] {"--listen", "6665", "--to", "6665"},
                 new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8)));
         assertTrue(err.text().contains("stagecraft spy: the route 127.0.0.1:6665 -> 127.0.0.1:6665 leads back"), err.text());
@@ -325,7 +298,7 @@ class SpyCommandTest {
         try (ServerSocket s = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
             deadPort = s.getLocalPort();
         }
-        Lines err = new Lines();
+        PrintedLines err = new PrintedLines();
         CountDownLatch stop = new CountDownLatch(1);
         try (ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor()) {
             SpyCommand.Options o = SpyCommand.parse(new String[] {"--listen", "0", "--to", "127.0.0.1:" + deadPort,
@@ -352,7 +325,7 @@ class SpyCommandTest {
         byte[] ident = "Player v.3.1.1".getBytes(StandardCharsets.US_ASCII);
         System.arraycopy(ident, 0, banner, 0, ident.length);
         byte[] garbage = new byte[100]; // zeros: no message header has size 0 and type 0
-        Lines err = new Lines();
+        PrintedLines err = new PrintedLines();
         CountDownLatch stop = new CountDownLatch(1);
         try (ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();
                 ServerSocket player = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {

@@ -58,33 +58,6 @@ class SpyFoxgloveTest {
     @TempDir
     Path tmp;
 
-    /** What the command prints, waited for line by line. */
-    private static final class Lines extends ByteArrayOutputStream {
-        synchronized String text() {
-            return toString(StandardCharsets.UTF_8);
-        }
-
-        String await(Pattern p, long timeoutMs) throws InterruptedException {
-            long deadline = System.currentTimeMillis() + timeoutMs;
-            while (System.currentTimeMillis() < deadline) {
-                Matcher m = p.matcher(text());
-                if (m.find()) {
-                    return m.group(1);
-                }
-                synchronized (this) {
-                    wait(50); // woken by write(); the timeout only bounds a missed notify
-                }
-            }
-            throw new AssertionError("no line matching " + p + " in:\n" + text());
-        }
-
-        @Override
-        public synchronized void write(byte[] b, int off, int len) {
-            super.write(b, off, len);
-            notifyAll();
-        }
-    }
-
     /** A Foxglove viewer that subscribes to every channel it is told of; may stop reading. */
     private static final class Viewer extends WebSocketClient {
         final BlockingQueue<JsonObject> texts = new LinkedBlockingQueue<>();
@@ -212,7 +185,7 @@ class SpyFoxgloveTest {
      */
     private Run relay(SpyCommand command, boolean stuckViewer, Consumer<Viewer> subscribed, String... extra) throws Exception {
         RecordedConnection rc = RecordedConnection.read(TraceCorpus.file("pioneer-laser-sonar.gt.trace.jsonl")).get(0);
-        Lines err = new Lines();
+        PrintedLines err = new PrintedLines();
         CountDownLatch stop = new CountDownLatch(1);
         CountDownLatch go = new CountDownLatch(1);
         try (ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();
@@ -331,7 +304,7 @@ class SpyFoxgloveTest {
     void aFoxglovePortInUseIsReportedAndLeavesNoLog() throws Exception {
         try (ServerSocket taken = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
             Path log = tmp.resolve("s.mcap");
-            Lines err = new Lines();
+            PrintedLines err = new PrintedLines();
             int code = new SpyCommand().serve(SpyCommand.parse(new String[] {"--listen", "0", "--to", "7665", "--log",
                     log.toString(), "--foxglove", String.valueOf(taken.getLocalPort())}),
                     new PrintStream(err, true, StandardCharsets.UTF_8), new CountDownLatch(1), false);
