@@ -8,6 +8,7 @@ import java.io.OutputStream;
 import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.player.wire.PlayerFramer;
+import org.stagecraft.spy.hold.SpanWriter;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 
 /**
@@ -29,7 +30,7 @@ import org.stagecraft.spy.proxy.ConnectionInfo;
 public final class BreakpointGate {
     private final DataBreakpoints owner;
     private final ConnectionInfo connection;
-    private final OutputStream downstream;
+    private final SpanWriter downstream;
 
     private long offset;
     private int bannerLeft = PlayerFramer.IDENT_LENGTH;
@@ -45,14 +46,11 @@ public final class BreakpointGate {
     private @Nullable MessageHeader kept;
     private final ByteArrayOutputStream keptBytes = new ByteArrayOutputStream();
 
-    private byte @Nullable [] pendBuf;
-    private int pendStart;
-    private int pendLen;
 
     BreakpointGate(DataBreakpoints owner, ConnectionInfo connection, OutputStream downstream) {
         this.owner = owner;
         this.connection = connection;
-        this.downstream = downstream;
+        this.downstream = new SpanWriter(downstream);
     }
 
     public ConnectionInfo connection() {
@@ -63,19 +61,17 @@ public final class BreakpointGate {
     public void relay(byte[] buf, int off, int len) throws IOException {
         int pos = off;
         int end = off + len;
-        pendBuf = buf;
-        pendStart = off;
-        pendLen = 0;
+        downstream.begin(buf, off);
         try {
             while (pos < end) {
                 if (lost) {
-                    forwardLater(pos, end - pos);
+                    downstream.later(pos, end - pos);
                     offset += end - pos;
                     break;
                 }
                 if (bannerLeft > 0) {
                     int n = Math.min(bannerLeft, end - pos);
-                    forwardLater(pos, n);
+                    downstream.later(pos, n);
                     bannerLeft -= n;
                     offset += n;
                     pos += n;
@@ -84,10 +80,10 @@ public final class BreakpointGate {
                 } else {
                     int n = (int) Math.min(payloadLeft, end - pos);
                     if (keepMessage) {
-                        flushPending();
+                        downstream.flush();
                         keptBytes.write(buf, pos, n);
                     } else {
-                        forwardLater(pos, n);
+                        downstream.later(pos, n);
                     }
                     payloadLeft -= n;
                     offset += n;
@@ -97,10 +93,9 @@ public final class BreakpointGate {
                     }
                 }
             }
-            flushPending();
+            downstream.flush();
         } finally {
-            pendBuf = null;
-            pendLen = 0;
+            downstream.end();
         }
     }
 
@@ -108,11 +103,11 @@ public final class BreakpointGate {
     public void end() throws IOException {
         if (keepHeader && headerFill > 0) {
             keepHeader = false;
-            downstream.write(header, 0, headerFill);
+            downstream.write(header, headerFill);
         }
         if (keepMessage) {
             keepMessage = false;
-            keptBytes.writeTo(downstream);
+            downstream.write(keptBytes.toByteArray());
             keptBytes.reset();
         }
     }
@@ -125,9 +120,9 @@ public final class BreakpointGate {
         int n = Math.min(MessageHeader.SIZE - headerFill, end - pos);
         System.arraycopy(buf, pos, header, headerFill, n);
         if (keepHeader) {
-            flushPending();
+            downstream.flush();
         } else {
-            forwardLater(pos, n);
+            downstream.later(pos, n);
         }
         headerFill += n;
         offset += n;
@@ -172,7 +167,7 @@ public final class BreakpointGate {
         keptBytes.reset();
         MessageHeader h = kept;
         kept = null;
-        flushPending(); // everything before the message has gone on
+        downstream.flush(); // everything before the message has gone on
         BreakpointHit hit = h == null ? null : owner.test(connection, messageStart, h, message);
         if (hit != null) {
             try {
@@ -189,27 +184,7 @@ public final class BreakpointGate {
         write(message);
     }
 
-    private void forwardLater(int pos, int n) throws IOException {
-        if (pendLen > 0 && pendStart + pendLen != pos) {
-            flushPending();
-        }
-        if (pendLen == 0) {
-            pendStart = pos;
-        }
-        pendLen += n;
-    }
-
-    private void flushPending() throws IOException {
-        byte[] b = pendBuf;
-        if (b != null && pendLen > 0) {
-            downstream.write(b, pendStart, pendLen);
-            pendStart += pendLen;
-            pendLen = 0;
-        }
-    }
-
     private void write(byte[] b) throws IOException {
-        flushPending();
         downstream.write(b);
     }
 }

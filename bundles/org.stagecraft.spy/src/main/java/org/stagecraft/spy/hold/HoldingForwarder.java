@@ -42,17 +42,12 @@ public final class HoldingForwarder {
 
     private final RobotHold holds;
     private final ConnectionInfo connection;
-    private final OutputStream upstream;
+    private final SpanWriter upstream;
     private final HoldObserver observer;
     private final Object lock = new Object();
 
     // guarded by lock
     private final BoundaryTracker tracker = new BoundaryTracker();
-    private long upstreamOffset;
-    /** Bytes of the chunk being relayed that are to be forwarded, written in one go. */
-    private byte @Nullable [] pendBuf;
-    private int pendStart;
-    private int pendLen;
     /** The current message's header is being kept back until it is complete (a hold was on at its start). */
     private boolean headerKept;
     private boolean currentHeld;
@@ -76,7 +71,7 @@ public final class HoldingForwarder {
     HoldingForwarder(RobotHold holds, ConnectionInfo connection, OutputStream upstream, HoldObserver observer) {
         this.holds = holds;
         this.connection = connection;
-        this.upstream = upstream;
+        this.upstream = new SpanWriter(upstream);
         this.observer = observer;
         this.lastHeardNanos = holds.nanoTime();
     }
@@ -91,9 +86,7 @@ public final class HoldingForwarder {
         synchronized (lock) {
             int pos = off;
             int end = off + len;
-            pendBuf = buf;
-            pendStart = off;
-            pendLen = 0;
+            upstream.begin(buf, off);
             try {
                 while (pos < end) {
                     if (tracker.atBoundary()) {
@@ -105,12 +98,12 @@ public final class HoldingForwarder {
                     BoundaryTracker.Part part = tracker.part();
                     int n = tracker.span(end - pos);
                     if (part == BoundaryTracker.Part.HEADER && headerKept) {
-                        flushPending(); // the tracker keeps the bytes
+                        upstream.flush(); // the tracker keeps the bytes
                     } else if (part == BoundaryTracker.Part.PAYLOAD && currentHeld) {
-                        flushPending();
+                        upstream.flush();
                         heldBytes.write(buf, pos, n);
                     } else {
-                        forwardLater(pos, n);
+                        upstream.later(pos, n);
                     }
                     if (part == BoundaryTracker.Part.PAYLOAD && currentMotion) {
                         motionPayload.write(buf, pos, n);
@@ -127,10 +120,9 @@ public final class HoldingForwarder {
                         messageDone();
                     }
                 }
-                flushPending();
+                upstream.flush();
             } finally {
-                pendBuf = null;
-                pendLen = 0;
+                upstream.end();
             }
         }
     }
@@ -233,8 +225,8 @@ public final class HoldingForwarder {
                 currentHeld = true;
                 heldBytes.reset();
                 heldBytes.write(header);
-                flushPending();
-                heldUpstreamAt = upstreamOffset;
+                upstream.flush();
+                heldUpstreamAt = upstream.written();
             } else {
                 write(header);
             }
@@ -291,8 +283,8 @@ public final class HoldingForwarder {
             }
             Last last = e.getValue();
             byte[] msg = ZeroVelocity.command(last.header(), last.velState() >= 0 ? last.velState() : 1);
-            flushPending(); // the bytes before it first: its upstream offset is where it really lands
-            long at = upstreamOffset;
+            upstream.flush(); // the bytes before it first: its upstream offset is where it really lands
+            long at = upstream.written();
             write(msg);
             injected++;
             observer.action(new HoldAction(connection, HoldEntry.Action.INJECTED, tracker.offset(), at,
@@ -310,30 +302,7 @@ public final class HoldingForwarder {
         };
     }
 
-    // ---- writing upstream -------------------------------------------------------------------------
-
-    private void forwardLater(int pos, int n) throws IOException {
-        if (pendLen > 0 && pendStart + pendLen != pos) {
-            flushPending();
-        }
-        if (pendLen == 0) {
-            pendStart = pos;
-        }
-        pendLen += n;
-    }
-
-    private void flushPending() throws IOException {
-        if (pendBuf != null && pendLen > 0) {
-            upstream.write(pendBuf, pendStart, pendLen);
-            upstreamOffset += pendLen;
-            pendStart += pendLen;
-            pendLen = 0;
-        }
-    }
-
     private void write(byte[] b) throws IOException {
-        flushPending();
         upstream.write(b);
-        upstreamOffset += b.length;
     }
 }
