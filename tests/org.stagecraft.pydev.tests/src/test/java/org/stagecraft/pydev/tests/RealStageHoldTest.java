@@ -326,7 +326,8 @@ class RealStageHoldTest {
     void aRobotDataBreakpointSuspendsTheProgramAtTheFirstScanNearerThan08mEveryRun() throws Exception {
         int runs = 20;
         Path scans = tmp.resolve("scans.txt");
-        write(project, "robot.py", TO_THE_WALL);
+        IFile robot = write(project, "robot.py", TO_THE_WALL);
+        WorkbenchShot.arrangeForDebugging(robot);
         var breakpoint = org.stagecraft.tools.ui.breakpoints.RobotDataBreakpoint.create("laser:0 min(ranges) < 0.8", 0);
         List<double[]> figures = new ArrayList<>(); // per run: hit -> SUSPEND ms, drift m, held-back commands
         ILaunch launch;
@@ -348,7 +349,8 @@ class RealStageHoldTest {
                 long arrival = events.arrival(suspend)[0];
                 var hit = spy.current();
                 assertNotNull(hit, "suspended by the robot data breakpoint (run " + n + ")");
-                assertTrue(hit.passedOn(), "its message went on to the program: " + hit.passedOnWhy());
+                // the session's debug listener passes it on at this same SUSPEND event, maybe after ours has it
+                Await.until("the hit's message to go on to the program", WAIT, hit::passedOn, () -> "");
                 IThread thread = (IThread) suspend.getSource();
                 String where = thread.getTopStackFrame() == null ? "?" : thread.getTopStackFrame().getName();
                 poses.awaitSampleAfter(arrival + 1200 * MS);
@@ -359,6 +361,13 @@ class RealStageHoldTest {
                         + "drift while suspended (0.2-1.2 s) %.4f m; stopped in %s", n, hit.why(), (arrival - hit.foundNanos()) / 1e6,
                         hit.passedOnWhy(), stop.drift, where));
                 assertTrue(stop.drift < 0.01, "the robot stood still while suspended: " + stop.drift + " m");
+                if (n == 1) {
+                    Await.until("the breakpoint to show its hit", WAIT, () -> !breakpoint.lastHit().isEmpty(), () -> "");
+                    Path png = reportDir().resolve("screenshots/robot-data-breakpoint.png");
+                    int colours = WorkbenchShot.captureDataBreakpoint(thread, png);
+                    assertTrue(colours > 50, "a real picture: " + colours + " colours in " + png);
+                    report("screenshot at the robot data breakpoint: " + png.toAbsolutePath());
+                }
                 // 1 m back along the path, for the next run
                 Sample at = poses.at(arrival + 1200 * MS);
                 double heading = Math.toRadians(45);

@@ -151,6 +151,49 @@ final class WorkbenchShot {
         return save(png, () -> true);
     }
 
+    /**
+     * At a robot data breakpoint's suspension: the Breakpoints view with the breakpoint and its last hit, the Debug view
+     * with the suspended thread, the Robot View; saves the shell's picture to {@code png}, returns its colour count.
+     */
+    static int captureDataBreakpoint(IThread thread, Path png) throws Exception {
+        Display display = Display.getDefault();
+        soft(Duration.ofSeconds(15), () -> ui(() -> DebugUITools.getDebugContext() instanceof IStackFrame f && thread.equals(f.getThread())));
+        AtomicReference<RobotView> view = new AtomicReference<>();
+        display.syncExec(() -> {
+            try {
+                IWorkbenchWindow window = PlatformUI.getWorkbench().getActiveWorkbenchWindow();
+                IWorkbenchPage page = window.getActivePage();
+                view.set((RobotView) page.showView(RobotView.ID, null, IWorkbenchPage.VIEW_VISIBLE));
+                page.showView(IDebugUIConstants.ID_BREAKPOINT_VIEW, null, IWorkbenchPage.VIEW_VISIBLE);
+                // in the consoles' stack, where the picture shows it whole (the perspective keeps it in a narrow stack)
+                EModelService models = window.getService(EModelService.class);
+                MWindow mWindow = window.getService(MWindow.class);
+                MPerspective perspective = models == null || mWindow == null ? null : models.getActivePerspective(mWindow);
+                if (perspective != null) {
+                    List<MPlaceholder> robot = models.findElements(perspective, "org.eclipse.ui.console.ConsoleView", MPlaceholder.class,
+                            null);
+                    List<MPlaceholder> breakpoints = models.findElements(perspective, IDebugUIConstants.ID_BREAKPOINT_VIEW,
+                            MPlaceholder.class, null);
+                    Object consoles = robot.isEmpty() ? null : robot.get(0).getParent();
+                    if (consoles instanceof MPartStack stack && !breakpoints.isEmpty() && breakpoints.get(0).getParent() != consoles) {
+                        models.move(breakpoints.get(0), stack);
+                    }
+                }
+                page.showView(IDebugUIConstants.ID_BREAKPOINT_VIEW, null, IWorkbenchPage.VIEW_ACTIVATE);
+                page.showView(IDebugUIConstants.ID_DEBUG_VIEW, null, IWorkbenchPage.VIEW_VISIBLE);
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        awaitDrawn(view.get());
+        // the Breakpoints view labels its rows in the background: wait for the breakpoint's text
+        soft(Duration.ofSeconds(15), () -> ui(() -> PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage()
+                .findView(IDebugUIConstants.ID_BREAKPOINT_VIEW) instanceof IDebugView v
+                && v.getViewer().getControl() instanceof org.eclipse.swt.widgets.Tree tree && tree.getItemCount() > 0
+                && tree.getItem(0).getText().startsWith("Robot data:")));
+        return save(png, () -> true);
+    }
+
     /** Opens the views and the log, waits until they have drawn, and saves the shell's picture to {@code png}; returns its colour count. */
     static int capture(IProject project, Path png) throws Exception {
         Display display = Display.getDefault();

@@ -105,6 +105,15 @@ class RobotDataBreakpointLaunchTest {
         assertEquals("laser:0 min(ranges) < 30 cm", b.condition());
         assertTrue(b.isEnabled());
         assertEquals("Robot data: laser:0 min(ranges) < 30 cm", RobotDataBreakpointPresentation.label(b));
+        String[] shown = new String[2];
+        org.eclipse.swt.widgets.Display.getDefault().syncExec(() -> {
+            org.eclipse.debug.ui.IDebugModelPresentation p = org.eclipse.debug.ui.DebugUITools.newDebugModelPresentation();
+            shown[0] = p.getText(b);
+            shown[1] = p.getImage(b) == null ? "no image" : "an image";
+            p.dispose();
+        });
+        assertEquals("Robot data: laser:0 min(ranges) < 30 cm", shown[0], "what the Breakpoints view shows");
+        assertEquals("an image", shown[1]);
 
         b.setHitCount(3);
         assertEquals(3, b.hitCount());
