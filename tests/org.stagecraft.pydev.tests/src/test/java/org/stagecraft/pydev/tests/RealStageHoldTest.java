@@ -433,6 +433,13 @@ class RealStageHoldTest {
                     }
                 }
             }
+            // the robots held at the message itself: the zero command's time after each hit, on the spy's clock
+            double[] toZero = breaks.stream().mapToDouble(b -> holds.stream().filter(e -> e.action() == HoldEntry.Action.INJECTED
+                    && e.timeNanos() >= b.timeNanos()).mapToLong(e -> e.timeNanos() - b.timeNanos()).min().orElse(Long.MAX_VALUE) / 1e6)
+                    .sorted().toArray();
+            assertTrue(toZero[toZero.length - 1] < 50, "zero velocity went to Player within 50 ms of every hit: " + Arrays.toString(toZero));
+            report(String.format(Locale.ROOT, "data breakpoint: message at the spy -> zero CMD_VEL to Player (spy log) p50 %.2f ms, max %.2f ms",
+                    toZero[toZero.length / 2], toZero[toZero.length - 1]));
             java.util.Set<Long> heldBack = new java.util.HashSet<>();
             holds.stream().filter(e -> e.action() == HoldEntry.Action.HELD_BACK).forEach(e -> heldBack.add(e.programOffset()));
             for (HoldEntry b : breaks) {
