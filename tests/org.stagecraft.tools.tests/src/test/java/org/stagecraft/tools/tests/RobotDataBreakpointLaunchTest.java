@@ -18,7 +18,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
 
 import org.eclipse.core.resources.IMarker;
 import org.eclipse.core.resources.IProject;
@@ -39,6 +38,7 @@ import org.stagecraft.spy.breakpoint.BreakpointHit;
 import org.stagecraft.spy.breakpoint.DataBreakpoints;
 import org.stagecraft.spy.hold.HoldReason;
 import org.stagecraft.spy.hold.RobotHold;
+import org.stagecraft.tests.support.Await;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.ui.breakpoints.RobotDataBreakpoint;
 import org.stagecraft.tools.ui.breakpoints.RobotDataBreakpointPresentation;
@@ -82,17 +82,6 @@ class RobotDataBreakpointLaunchTest {
         for (RobotDataBreakpoint b : RobotDataBreakpoints.all()) {
             DebugPlugin.getDefault().getBreakpointManager().removeBreakpoint(b, true);
         }
-    }
-
-    private static boolean await(BooleanSupplier condition) throws InterruptedException {
-        long end = System.nanoTime() + WAIT.toNanos();
-        while (System.nanoTime() < end) {
-            if (condition.getAsBoolean()) {
-                return true;
-            }
-            Thread.sleep(20);
-        }
-        return condition.getAsBoolean();
     }
 
     @Test
@@ -151,7 +140,7 @@ class RobotDataBreakpointLaunchTest {
         RobotHold hold = parts.session().holds();
         assertNotNull(parts.holds().dataBreakpoints(), "holds are on: so are robot data breakpoints");
         DataBreakpoints spy = parts.holds().dataBreakpoints().spy();
-        assertTrue(await(() -> spy.breakpoints().size() == 1), "the session's spy has the workbench's breakpoint");
+        Await.until("the session's spy has the workbench's breakpoint", WAIT, () -> spy.breakpoints().size() == 1);
         spy.passOnBound(Duration.ofSeconds(60)); // here only the debugger's SUSPEND may pass the message on
         parts.holds().dataBreakpoints().suspendSettle(Duration.ofSeconds(60));
         FakeDebug program = new FakeDebug(1);
@@ -166,19 +155,19 @@ class RobotDataBreakpointLaunchTest {
                 throw new RuntimeException(e);
             }
         });
-        assertTrue(await(() -> spy.current() != null), "the breakpoint held on the recording's near scans");
+        Await.until("the breakpoint held on the recording's near scans", WAIT, () -> spy.current() != null);
         BreakpointHit hit = spy.current();
         assertTrue(hit.why().startsWith("laser:0 min(ranges) = "), hit.why());
-        assertTrue(await(() -> program.suspendRequests.get() == 1), "the program's debug target was asked to suspend");
+        Await.until("the program's debug target was asked to suspend", WAIT, () -> program.suspendRequests.get() == 1);
         assertTrue(hold.reasons().containsKey(HoldReason.DATA_BREAKPOINT), hold.reasons().toString());
         assertFalse(hit.passedOn(), "the message waits for the program to be suspended");
         assertFalse(client.isDone());
 
         FakeDebug.fire(FakeDebug.event(program.threads.get(0), DebugEvent.SUSPEND, DebugEvent.CLIENT_REQUEST));
-        assertTrue(await(hit::passedOn));
+        Await.until("the message to go on once the program is suspended", WAIT, hit::passedOn);
         assertEquals("the program was suspended in the debugger", hit.passedOnWhy());
         assertTrue(client.get(60, TimeUnit.SECONDS).matches(), "every byte reached the program, in order");
-        assertTrue(await(() -> b.lastHit().equals(hit.why())), "the breakpoint shows its last hit: " + b.lastHit());
+        Await.until("the breakpoint to show its last hit", WAIT, () -> b.lastHit().equals(hit.why()), b::lastHit);
 
         FakeDebug.fire(FakeDebug.event(program.threads.get(0), DebugEvent.RESUME, DebugEvent.STEP_OVER));
         assertEquals(hit, spy.current(), "a step does not end the hit: the robots stay held while stepping");
@@ -198,7 +187,7 @@ class RobotDataBreakpointLaunchTest {
                 throw new RuntimeException(e);
             }
         });
-        assertTrue(await(() -> spy.current() != null && spy.current().passedOn()), "held, then passed on after the settle time");
+        Await.until("held, then passed on after the settle time", WAIT, () -> spy.current() != null && spy.current().passedOn());
         assertTrue(spy.current().passedOnWhy().startsWith("the program was asked to suspend"), spy.current().passedOnWhy());
         assertEquals(2, program.suspendRequests.get());
         assertTrue(second.get(60, TimeUnit.SECONDS).matches());
@@ -208,8 +197,8 @@ class RobotDataBreakpointLaunchTest {
 
         // disabling it in the Breakpoints view reaches the spy
         b.setEnabled(false);
-        assertTrue(await(() -> !spy.breakpoints().get(0).enabled()));
+        Await.until("disabling it to reach the spy", WAIT, () -> !spy.breakpoints().get(0).enabled());
         DebugPlugin.getDefault().getBreakpointManager().removeBreakpoint(b, true);
-        assertTrue(await(() -> spy.breakpoints().isEmpty()));
+        Await.until("removing it to reach the spy", WAIT, () -> spy.breakpoints().isEmpty());
     }
 }
