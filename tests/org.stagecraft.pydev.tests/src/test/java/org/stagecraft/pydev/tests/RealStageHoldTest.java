@@ -402,13 +402,7 @@ class RealStageHoldTest {
 
     /** From the spy log: each hit at the first scan below 0.8 m, read by the program, and nothing moved the robot meanwhile. */
     private void checkDataBreakpointsInTheLog(int runs, String programOut) throws IOException {
-        Path logs = project.getLocation().toPath().resolve("logs");
-        List<Path> files;
-        try (Stream<Path> s = Files.list(logs)) {
-            files = s.filter(p -> p.toString().endsWith(".mcap")).toList();
-        }
-        assertEquals(1, files.size(), "one spy log: " + files);
-        try (SpyLogReader r = SpyLogReader.open(files.get(0))) {
+        try (SpyLogReader r = SpyLogReader.open(spyLog())) {
             List<HoldEntry> holds = r.holdEntries();
             List<HoldEntry> breaks = holds.stream().filter(e -> e.action() == HoldEntry.Action.BREAK).toList();
             assertEquals(runs, breaks.size(), "one hit per run");
@@ -552,14 +546,19 @@ class RealStageHoldTest {
         return withWire;
     }
 
-    private List<HoldEntry> injectedEntries() throws IOException {
+    /** The session's one spy log, in the project's log folder. */
+    private Path spyLog() throws IOException {
         Path logs = project.getLocation().toPath().resolve("logs");
         List<Path> files;
         try (Stream<Path> s = Files.list(logs)) {
             files = s.filter(p -> p.toString().endsWith(".mcap")).toList();
         }
         assertEquals(1, files.size(), "one spy log: " + files);
-        try (SpyLogReader r = SpyLogReader.open(files.get(0))) {
+        return files.get(0);
+    }
+
+    private List<HoldEntry> injectedEntries() throws IOException {
+        try (SpyLogReader r = SpyLogReader.open(spyLog())) {
             return r.holdEntries().stream().filter(e -> e.action() == HoldEntry.Action.INJECTED).toList();
         }
     }
