@@ -22,6 +22,7 @@ import org.stagecraft.streams.StreamPattern;
  * </ul>
  */
 public final class HoldStreams {
+    public static final int WORLD_TYPE = 250;
     public static final int PASSED_ON_TYPE = 251;
     public static final int BREAK_TYPE = 252;
     public static final int STATE_TYPE = 253;
@@ -30,6 +31,9 @@ public final class HoldStreams {
 
     /** The hold's state stream (one per bus: one spy per session). */
     public static final StreamKey STATE = new StreamKey("stagecraft", "robot-hold", STATE_TYPE, 0, 0, 0);
+
+    /** The session's simulated world frozen or thawed ({@link WorldChange}; one per bus). */
+    public static final StreamKey WORLD = new StreamKey("stagecraft", "world", WORLD_TYPE, 0, 0, 0);
 
     private HoldStreams() {
     }

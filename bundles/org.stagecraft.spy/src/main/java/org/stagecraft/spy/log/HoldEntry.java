@@ -3,11 +3,12 @@ package org.stagecraft.spy.log;
 /**
  * Something Stagecraft itself did to a robot program's streams while a robot hold was on (see
  * docs/debugging-robots.md): bytes it injected towards Player, program bytes it held back, the
- * hold switching on or off, or a robot data breakpoint holding Player's messages back from the program. These entries live on the log's own {@code /stagecraft/hold} channel, apart
+ * hold switching on or off, a robot data breakpoint holding Player's messages back from the program, or the
+ * simulated world frozen and thawed. These entries live on the log's own {@code /stagecraft/hold} channel, apart
  * from the wire channels, which keep recording exactly what the program sent; with both,
  * {@link SpyLogReader#upstreamBytes} rebuilds what Player received.
  *
- * @param conn           the connection, 0 for {@link Action#HOLD_ON}/{@link Action#HOLD_OFF} (they concern the spy)
+ * @param conn           the connection, 0 for hold on/off and the world's freezes (they concern the session)
  * @param port           the connection's port (0 for hold on/off)
  * @param programOffset  offset in the program's client-to-server stream: injected bytes went to Player
  *                       just before the program's byte at this offset; held-back bytes start here
@@ -39,7 +40,14 @@ public record HoldEntry(long timeNanos, int conn, int port, Action action, long 
          * program (text: after how long, and why). They are in the wire channel as always, with the time
          * they were passed on.
          */
-        PASSED_ON
+        PASSED_ON,
+        /**
+         * Stagecraft stopped the simulated world of the session's Player (conn 0; text: the simulated time it
+         * stopped at and why). Nothing in it moves, and its simulated time stands, until {@link #WORLD_THAWED}.
+         */
+        WORLD_FROZEN,
+        /** The simulated world runs on from where it stopped (conn 0; text: the simulated time and how long). */
+        WORLD_THAWED
     }
 
     public HoldEntry {

@@ -24,7 +24,7 @@ import org.stagecraft.mcap.McapFormatException;
  *   bytes wire = 4;                // the exact wire bytes (written last)
  * }
  * message HoldAction {             // one thing a robot hold did
- *   enum Action { ACTION_UNSPECIFIED = 0; INJECTED = 1; HELD_BACK = 2; HOLD_ON = 3; HOLD_OFF = 4; BREAK = 5; PASSED_ON = 6; }
+ *   enum Action { ACTION_UNSPECIFIED = 0; INJECTED = 1; HELD_BACK = 2; HOLD_ON = 3; HOLD_OFF = 4; BREAK = 5; PASSED_ON = 6; WORLD_FROZEN = 7; WORLD_THAWED = 8; }
  *   uint32 conn = 1; uint32 port = 2; Action action = 3;
  *   uint64 program_offset = 4; uint64 upstream_offset = 5; string text = 6; bytes bytes = 7;
  * }
@@ -131,7 +131,7 @@ final class WireProto {
                 field("offset", 1, TYPE_UINT64, null), field("kind", 2, TYPE_ENUM, ".stagecraft.spy.WireMessage.Kind"),
                 field("reason", 3, TYPE_STRING, null), field("wire", 4, TYPE_BYTES, null));
         RecordBuffer hold = message("HoldAction",
-                enumType("Action", "ACTION_UNSPECIFIED", "INJECTED", "HELD_BACK", "HOLD_ON", "HOLD_OFF", "BREAK", "PASSED_ON"),
+                enumType("Action", "ACTION_UNSPECIFIED", "INJECTED", "HELD_BACK", "HOLD_ON", "HOLD_OFF", "BREAK", "PASSED_ON", "WORLD_FROZEN", "WORLD_THAWED"),
                 field("conn", 1, TYPE_UINT32, null), field("port", 2, TYPE_UINT32, null),
                 field("action", 3, TYPE_ENUM, ".stagecraft.spy.HoldAction.Action"),
                 field("program_offset", 4, TYPE_UINT64, null), field("upstream_offset", 5, TYPE_UINT64, null),

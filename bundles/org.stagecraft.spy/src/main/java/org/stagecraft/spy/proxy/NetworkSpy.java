@@ -25,6 +25,7 @@ import org.stagecraft.spy.breakpoint.BreakpointGate;
 import org.stagecraft.spy.breakpoint.DataBreakpoints;
 import org.stagecraft.spy.hold.HoldAction;
 import org.stagecraft.spy.hold.HoldObserver;
+import org.stagecraft.spy.hold.WorldChange;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.hold.HoldingForwarder;
 import org.stagecraft.spy.hold.RobotHold;
@@ -115,6 +116,14 @@ public final class NetworkSpy implements AutoCloseable {
      */
     public RobotHold holds() {
         return holds;
+    }
+
+    /**
+     * Logs and publishes that the session froze or thawed its simulated world (the session does that, the spy
+     * only records it with its holds: docs/debugging-robots.md).
+     */
+    public void worldChanged(WorldChange change) {
+        observe(() -> observer.worldChanged(change, WallClock.nowNanos()));
     }
 
     /**

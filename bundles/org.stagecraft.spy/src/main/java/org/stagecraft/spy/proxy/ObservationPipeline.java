@@ -30,6 +30,7 @@ import org.stagecraft.player.wire.WireEvent;
 import org.stagecraft.spy.hold.HoldAction;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.hold.HoldStreams;
+import org.stagecraft.spy.hold.WorldChange;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamMessage;
@@ -108,6 +109,9 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
     }
 
     private record HoldChanged(HoldState state, long t) implements Item {
+    }
+
+    private record WorldChanged(WorldChange change, long t) implements Item {
     }
 
     private record Stop() implements Item {
@@ -648,6 +652,11 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
         enqueue(new HoldChanged(state, timeNanos));
     }
 
+    @Override
+    public void worldChanged(WorldChange change, long timeNanos) {
+        enqueue(new WorldChanged(change, timeNanos));
+    }
+
     // ---- status --------------------------------------------------------------------------------
 
     public long messages() {
@@ -980,6 +989,12 @@ public final class ObservationPipeline implements WireObserver, AutoCloseable {
                 record(r -> r.hold(new HoldEntry(h.t(), 0, 0, s.held() ? HoldEntry.Action.HOLD_ON : HoldEntry.Action.HOLD_OFF,
                         0, 0, new byte[0], s.description())));
                 outbox.add(new StreamMessage(HoldStreams.STATE, h.t(), s));
+            }
+            case WorldChanged w -> {
+                WorldChange c = w.change();
+                record(r -> r.hold(new HoldEntry(w.t(), 0, 0, c.frozen() ? HoldEntry.Action.WORLD_FROZEN
+                        : HoldEntry.Action.WORLD_THAWED, 0, 0, new byte[0], c.text())));
+                outbox.add(new StreamMessage(HoldStreams.WORLD, w.t(), c));
             }
             case Stop s -> {
                 // handled by the loop

@@ -3,6 +3,7 @@ package org.stagecraft.spy.proxy;
 import org.stagecraft.player.wire.Direction;
 import org.stagecraft.spy.hold.HoldAction;
 import org.stagecraft.spy.hold.HoldState;
+import org.stagecraft.spy.hold.WorldChange;
 
 /**
  * Sees what the spy forwards, after it has been forwarded. Called on the forwarding threads, so
@@ -40,6 +41,10 @@ public interface WireObserver {
 
     /** The robot hold changed (enabled, held, reasons). */
     default void holdState(HoldState state, long timeNanos) {
+    }
+
+    /** The session froze or thawed its simulated world. */
+    default void worldChanged(WorldChange change, long timeNanos) {
     }
 
     WireObserver NONE = new WireObserver() {

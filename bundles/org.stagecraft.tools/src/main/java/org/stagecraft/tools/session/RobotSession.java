@@ -1,8 +1,11 @@
 package org.stagecraft.tools.session;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.LinkedHashMap;
@@ -30,6 +33,11 @@ import org.stagecraft.tools.process.ToolException;
 import org.stagecraft.tools.process.ToolListener;
 import org.stagecraft.tools.process.ToolSpec;
 import org.stagecraft.tools.process.ToolState;
+import org.stagecraft.tools.world.WorldChannel;
+import org.stagecraft.tools.world.WorldDriver;
+import org.stagecraft.tools.world.WorldException;
+import org.stagecraft.tools.world.WorldFreeze;
+import org.stagecraft.tools.world.WorldState;
 
 /**
  * One development session against Player, started in the order the parts depend on each other:
@@ -39,7 +47,9 @@ import org.stagecraft.tools.process.ToolState;
  * <li>pick a free port for each, write the rewritten copy of the cfg into a scratch directory;</li>
  * <li>start the user's tools, each until ready;</li>
  * <li>start Player on the copy ({@code -p MOVED copy}) until all moved ports accept connections;</li>
- * <li>start the Network Spy on the original ports, forwarding to the moved ones, logging.</li>
+ * <li>start the Network Spy on the original ports, forwarding to the moved ones, logging;</li>
+ * <li>when Player runs Stage and the options ask for it, connect to Stagecraft's world driver (added to the
+ * copy in step 2, on a port of its own) so that the world freezes while the robots are held.</li>
  * </ol>
  * Robot programs then connect to the original ports, unchanged. If any step fails, what was
  * started is stopped again before the error is thrown: there is no half-started session.
@@ -47,6 +57,7 @@ import org.stagecraft.tools.process.ToolState;
  */
 public final class RobotSession implements AutoCloseable {
     public static final String PLAYER_TOOL_NAME = "Player";
+    private static final Duration WORLD_ANSWER_WITHIN = Duration.ofSeconds(5);
 
     private final SessionConfig config;
     private final CodecRegistry codecs;
@@ -60,6 +71,8 @@ public final class RobotSession implements AutoCloseable {
     private @Nullable StreamBus bus;
     private @Nullable ObservationPipeline pipeline;
     private @Nullable NetworkSpy spy;
+    private @Nullable WorldFreeze world;
+    private String worldProblem = "";
     private boolean closed;
     private SessionState state = SessionState.STARTING;
     private final CompletableFuture<String> failed = new CompletableFuture<>();
@@ -140,7 +153,7 @@ public final class RobotSession implements AutoCloseable {
         }
         try {
             boolean defaultListed = ports.containsKey(config.defaultPort());
-            List<Integer> free = Ports.free("127.0.0.1", ports.size() + (defaultListed ? 0 : 1));
+            List<Integer> free = Ports.free("127.0.0.1", ports.size() + (defaultListed ? 0 : 1) + 1);
             int i = 0;
             for (int original : ports.keySet()) {
                 portMap.put(original, free.get(i++));
@@ -149,6 +162,11 @@ public final class RobotSession implements AutoCloseable {
             Path scratchRoot = config.scratchRoot();
             scratch = ScratchDirectory.create(scratchRoot != null ? scratchRoot : ScratchDirectory.defaultRoot());
             rewritten = CfgRewriter.write(cfg, portMap, scratch.path());
+            int worldPort = addWorldDriver(cfg, rewritten.main(), free.get(free.size() - 1));
+            List<Integer> playerPorts = new ArrayList<>(portMap.values());
+            if (worldPort > 0) {
+                playerPorts.add(worldPort);
+            }
 
             for (ToolSpec t : config.tools()) {
                 SupervisedTool tool = new SupervisedTool(t, listener);
@@ -159,12 +177,15 @@ public final class RobotSession implements AutoCloseable {
             List<String> command = new ArrayList<>(config.playerCommand());
             command.addAll(List.of("-p", String.valueOf(movedDefault), rewritten.main().toString()));
             ToolSpec playerSpec = new ToolSpec(PLAYER_TOOL_NAME, command, cfg.file().getParent(), config.playerEnvironment(),
-                    Readiness.playerPorts("127.0.0.1", List.copyOf(portMap.values())), config.playerRestart(),
+                    Readiness.playerPorts("127.0.0.1", List.copyOf(playerPorts)), config.playerRestart(),
                     config.playerReadyWithin());
             player = new SupervisedTool(playerSpec, watcher);
             player.start();
 
             startSpy();
+            if (worldPort > 0) {
+                startWorldFreeze(worldPort);
+            }
             synchronized (this) {
                 if (state == SessionState.STARTING) {
                     state = SessionState.RUNNING;
@@ -215,6 +236,63 @@ public final class RobotSession implements AutoCloseable {
     }
 
     /**
+     * Adds Stagecraft's world driver to the copy Player runs on, when the options ask for frozen worlds, holds are
+     * on and the cfg runs Stage; builds it first if needed. A driver that cannot be built is no reason to refuse
+     * the session: it runs without frozen worlds, and the session's console says why.
+     *
+     * @return the driver's port, or -1 when there is none
+     */
+    private int addWorldDriver(PlayerCfg cfg, Path copy, int port) throws IOException {
+        SpyOptions o = config.spy();
+        if (!o.freezeWorld() || !o.holdsEnabled()) {
+            return -1;
+        }
+        if (!runsStage(cfg)) {
+            worldProblem = "Player runs no Stage world here (no \"stage\" driver in " + cfg.file().getFileName() + ")";
+            return -1;
+        }
+        try {
+            Path library = WorldDriver.build(config.playerCommand().get(0), config.playerEnvironment(), WorldDriver.defaultCache());
+            Files.writeString(copy, WorldDriver.cfgSection(library, port), StandardCharsets.UTF_8, StandardOpenOption.APPEND);
+            return port;
+        } catch (WorldException e) {
+            worldProblem = e.getMessage();
+            listener.output(null, ToolListener.Stream.SUPERVISOR, "the simulated world will not freeze while robots are held: "
+                    + e.getMessage());
+            return -1;
+        }
+    }
+
+    /** Whether a driver of the cfg is Stage's ({@code name "stage"}). */
+    static boolean runsStage(PlayerCfg cfg) {
+        for (PlayerCfg.Source s : cfg.sources()) {
+            for (PlayerCfg.Entry e : s.entries()) {
+                if (e.key().equals("name") && e.values().stream().anyMatch(v -> v.text().equals("stage"))) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    private void startWorldFreeze(int port) {
+        NetworkSpy s = Objects.requireNonNull(spy);
+        try {
+            WorldChannel channel = WorldChannel.open("127.0.0.1", port, WORLD_ANSWER_WITHIN);
+            WorldState at = channel.get();
+            WorldFreeze w = new WorldFreeze(channel, s, line -> listener.output(null, ToolListener.Stream.SUPERVISOR, line));
+            world = w;
+            s.holds().addListener(w);
+            listener.output(null, ToolListener.Stream.SUPERVISOR, "the simulated world freezes while robots are held (Stage "
+                    + (at.gui() ? "with its window" : "without a window") + ", simulated time " + at.simTime() + ")");
+        } catch (WorldException e) {
+            worldProblem = e.getMessage();
+            listener.output(null, ToolListener.Stream.SUPERVISOR, "the simulated world will not freeze while robots are held: "
+                    + e.getMessage());
+        }
+    }
+
+    /**
      * Before {@code start()}: holds and robot data breakpoints only apply to connections accepted while they
      * are enabled, and a robot program may connect the moment the spy listens.
      */
@@ -238,6 +316,19 @@ public final class RobotSession implements AutoCloseable {
 
     public SessionConfig config() {
         return config;
+    }
+
+    /**
+     * What freezes this session's simulated world while its robots are held, or null when nothing does
+     * ({@link #worldProblem()} says why, if the options asked for it).
+     */
+    public @Nullable WorldFreeze world() {
+        return world;
+    }
+
+    /** Why the world does not freeze although the options ask for it ("" when it does, or was not asked to). */
+    public String worldProblem() {
+        return worldProblem;
     }
 
     public @Nullable PlayerCfg cfg() {
@@ -322,6 +413,13 @@ public final class RobotSession implements AutoCloseable {
         closed = true;
         if (state != SessionState.FAILED) {
             state = SessionState.CLOSED;
+        }
+        WorldFreeze w = world;
+        if (w != null) {
+            if (spy != null) {
+                spy.holds().removeListener(w);
+            }
+            w.close(); // a world left frozen would outlive the hold that froze it
         }
         if (spy != null) {
             spy.close();

@@ -7,17 +7,20 @@ import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.proxy.NetworkSpy;
 
 /**
- * How a session's Network Spy treats robot programs (docs/debugging-robots.md).
+ * How a session's Network Spy treats robot programs, and what a hold does (docs/debugging-robots.md).
  *
  * @param upstreamGrace      how long a program's connection waits for Player to accept
  *                           ({@link NetworkSpy#upstreamGrace(Duration)})
  * @param holdWhenSuspended  hold the robots while the program is suspended in the debugger
  * @param watchdog           the silence watchdog's timeout, or null when it is off
+ * @param freezeWorld        while the robots are held, freeze the simulated world too, when the session's Player
+ *                           runs Stage (Stagecraft's world driver, {@link org.stagecraft.tools.world.WorldFreeze})
  */
-public record SpyOptions(Duration upstreamGrace, boolean holdWhenSuspended, @Nullable Duration watchdog) {
+public record SpyOptions(Duration upstreamGrace, boolean holdWhenSuspended, @Nullable Duration watchdog, boolean freezeWorld) {
 
-    /** The defaults of a new launch configuration: hold when suspended, no watchdog, the spy's grace. */
-    public static final SpyOptions DEFAULT = new SpyOptions(NetworkSpy.DEFAULT_UPSTREAM_GRACE, true, null);
+    /** The defaults of a new launch configuration: hold when suspended, freeze the world, no watchdog, the spy's grace. */
+    public static final SpyOptions DEFAULT = new SpyOptions(NetworkSpy.DEFAULT_UPSTREAM_GRACE, true, null, true);
+
 
     public SpyOptions {
         Objects.requireNonNull(upstreamGrace, "upstreamGrace");
@@ -38,14 +41,18 @@ public record SpyOptions(Duration upstreamGrace, boolean holdWhenSuspended, @Nul
     }
 
     public SpyOptions withUpstreamGrace(Duration grace) {
-        return new SpyOptions(grace, holdWhenSuspended, watchdog);
+        return new SpyOptions(grace, holdWhenSuspended, watchdog, freezeWorld);
     }
 
     public SpyOptions withHoldWhenSuspended(boolean on) {
-        return new SpyOptions(upstreamGrace, on, watchdog);
+        return new SpyOptions(upstreamGrace, on, watchdog, freezeWorld);
     }
 
     public SpyOptions withWatchdog(Duration timeout) {
-        return new SpyOptions(upstreamGrace, holdWhenSuspended, timeout);
+        return new SpyOptions(upstreamGrace, holdWhenSuspended, timeout, freezeWorld);
+    }
+
+    public SpyOptions withFreezeWorld(boolean on) {
+        return new SpyOptions(upstreamGrace, holdWhenSuspended, watchdog, on);
     }
 }

@@ -69,7 +69,7 @@ class SessionSpyOptionsTest {
     @Test
     void holdsAreEnabledBeforeTheFirstProgramConnectsAndTheWatchdogAndGraceAreSet() throws Exception {
         int port = Ports.free("127.0.0.1", 1).get(0);
-        SpyOptions options = new SpyOptions(Duration.ofSeconds(2), true, Duration.ofMillis(750));
+        SpyOptions options = new SpyOptions(Duration.ofSeconds(2), true, Duration.ofMillis(750), false);
         try (RobotSession session = RobotSession.start(config(port, options), new Recorder());
                 Socket program = new Socket(InetAddress.getLoopbackAddress(), port)) {
             RobotHold holds = session.holds();

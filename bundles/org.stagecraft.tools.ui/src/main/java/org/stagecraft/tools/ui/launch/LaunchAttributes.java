@@ -25,6 +25,8 @@ public final class LaunchAttributes {
 
     /** Hold the robots while the robot program is suspended in the debugger (boolean, true). */
     public static final String HOLD_WHEN_SUSPENDED = P + "holdWhenSuspended";
+    /** While the robots are held, freeze the simulated world too, when Player runs Stage (boolean, true). */
+    public static final String FREEZE_WORLD = P + "freezeWorld";
     /** The silence watchdog is on (boolean, false). */
     public static final String WATCHDOG = P + "watchdog";
     /** The silence watchdog's timeout in milliseconds (int, {@value #DEFAULT_WATCHDOG_MILLIS}). */

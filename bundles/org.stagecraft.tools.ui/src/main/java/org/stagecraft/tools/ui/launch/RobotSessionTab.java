@@ -24,7 +24,7 @@ import org.stagecraft.tools.session.SpyOptions;
 
 /**
  * The Player cfg, the robot program, Player's program, port, restart policy, where the spy log goes, and
- * how the spy treats robot programs: upstream grace, robot holds while suspended, the silence watchdog.
+ * how the spy treats robot programs: upstream grace, robot holds while suspended, the frozen world, the silence watchdog.
  */
 public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
     private @Nullable Text cfg;
@@ -35,6 +35,7 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
     private @Nullable Text logFolder;
     private @Nullable Text grace;
     private @Nullable Button holdWhenSuspended;
+    private @Nullable Button freezeWorld;
     private @Nullable Button watchdog;
     private @Nullable Text watchdogSeconds;
 
@@ -54,6 +55,11 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
                 "While the debugger has the robot program suspended (breakpoint, step, Suspend), the Network Spy sends "
                         + "zero velocity to its robots and holds back its motion commands; resuming releases them. "
                         + "Also lets the emergency stop hold this session's robots.");
+        freezeWorld = check(c, "Freeze the simulated world while the program is suspended (when Player runs Stage)",
+                "While the robots are held (suspended in the debugger, a robot data breakpoint, the emergency stop), "
+                        + "Stage's world stops too: simulated time, every model, every robot, including robots of other "
+                        + "programs; after Resume it runs on from where it stopped. Stagecraft adds its own small driver "
+                        + "to Player's copy of the cfg for this (built with g++ on first use).");
         watchdog = new Button(c, SWT.CHECK);
         watchdog.setText("Silence watchdog: hold a moving robot when its program sends nothing for (seconds):");
         watchdog.setToolTipText("Catches what the debugger does not tell: a program stuck in a loop, a crashed process "
@@ -122,6 +128,7 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
         c.setAttribute(LaunchAttributes.PLAYER_RESTART, "never");
         c.setAttribute(LaunchAttributes.LOG_FOLDER, LaunchAttributes.DEFAULT_LOG_FOLDER);
         c.setAttribute(LaunchAttributes.HOLD_WHEN_SUSPENDED, SpyOptions.DEFAULT.holdWhenSuspended());
+        c.setAttribute(LaunchAttributes.FREEZE_WORLD, SpyOptions.DEFAULT.freezeWorld());
         c.setAttribute(LaunchAttributes.WATCHDOG, false);
         c.setAttribute(LaunchAttributes.WATCHDOG_MILLIS, LaunchAttributes.DEFAULT_WATCHDOG_MILLIS);
         c.setAttribute(LaunchAttributes.UPSTREAM_GRACE_SECONDS, (int) SpyOptions.DEFAULT.upstreamGrace().toSeconds());
@@ -141,6 +148,7 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
                     (int) SpyOptions.DEFAULT.upstreamGrace().toSeconds())));
             holdWhenSuspended.setSelection(c.getAttribute(LaunchAttributes.HOLD_WHEN_SUSPENDED,
                     SpyOptions.DEFAULT.holdWhenSuspended()));
+            freezeWorld.setSelection(c.getAttribute(LaunchAttributes.FREEZE_WORLD, SpyOptions.DEFAULT.freezeWorld()));
             watchdog.setSelection(c.getAttribute(LaunchAttributes.WATCHDOG, false));
             watchdogSeconds.setText(seconds(c.getAttribute(LaunchAttributes.WATCHDOG_MILLIS,
                     LaunchAttributes.DEFAULT_WATCHDOG_MILLIS)));
@@ -169,6 +177,7 @@ public final class RobotSessionTab extends AbstractLaunchConfigurationTab {
             // isValid reports it
         }
         c.setAttribute(LaunchAttributes.HOLD_WHEN_SUSPENDED, holdWhenSuspended.getSelection());
+        c.setAttribute(LaunchAttributes.FREEZE_WORLD, freezeWorld.getSelection());
         c.setAttribute(LaunchAttributes.WATCHDOG, watchdog.getSelection());
         try {
             c.setAttribute(LaunchAttributes.WATCHDOG_MILLIS, millis(watchdogSeconds.getText()));

@@ -99,7 +99,7 @@ record SessionSettings(SessionConfig config, @Nullable IFile cfgFile, @Nullable 
         return new SessionSettings(config, cfgFile, program, project, logFolder);
     }
 
-    /** Robot holds, the watchdog and the upstream grace, as the Robot Session tab set them (defaults: {@link SpyOptions#DEFAULT}). */
+    /** Robot holds, the frozen world, the watchdog and the upstream grace, as the Robot Session tab set them (defaults: {@link SpyOptions#DEFAULT}). */
     static SpyOptions spyOptions(ILaunchConfiguration c) throws CoreException {
         int grace = c.getAttribute(LaunchAttributes.UPSTREAM_GRACE_SECONDS, (int) SpyOptions.DEFAULT.upstreamGrace().toSeconds());
         if (grace < 0) {
@@ -114,7 +114,8 @@ record SessionSettings(SessionConfig config, @Nullable IFile cfgFile, @Nullable 
             }
             watchdog = Duration.ofMillis(ms);
         }
-        return new SpyOptions(Duration.ofSeconds(grace), hold, watchdog);
+        boolean freeze = c.getAttribute(LaunchAttributes.FREEZE_WORLD, SpyOptions.DEFAULT.freezeWorld());
+        return new SpyOptions(Duration.ofSeconds(grace), hold, watchdog, freeze);
     }
 
     /** The user tools to start: the named ones (in preference order), or every enabled one. */
