@@ -9,8 +9,8 @@ import org.stagecraft.player.wire.Direction;
 import org.stagecraft.spy.log.HoldEntry;
 
 /**
- * A log's robot holds, shaped for the Session Log editor: the spans during which robots were held (for
- * the timeline), the instants of injected and held-back messages, and which of the program's messages
+ * A log's robot holds, shaped for the Session Log editor: the spans during which robots were held and the
+ * simulated world was frozen (for the timeline), the instants of injected and held-back messages, and which of the program's messages
  * were held back (for the inspector, which lists what the program sent).
  */
 public final class HoldMarks {
@@ -19,6 +19,7 @@ public final class HoldMarks {
     }
 
     private final List<Span> spans;
+    private final List<Span> frozen;
     private final List<Long> injected = new ArrayList<>();
     private final List<Long> heldBack = new ArrayList<>();
     private final Set<Long> heldBackMessages = new HashSet<>();
@@ -28,10 +29,25 @@ public final class HoldMarks {
     /** @param endNanos where a hold still on at the end of the log is drawn to */
     public HoldMarks(List<HoldEntry> entries, long endNanos) {
         List<Span> out = new ArrayList<>();
+        List<Span> frozenOut = new ArrayList<>();
         long on = Long.MIN_VALUE;
         String why = "";
+        long frozenAt = Long.MIN_VALUE;
+        String frozenText = "";
         for (HoldEntry e : entries) {
             switch (e.action()) {
+                case WORLD_FROZEN -> {
+                    if (frozenAt == Long.MIN_VALUE) {
+                        frozenAt = e.timeNanos();
+                        frozenText = e.text();
+                    }
+                }
+                case WORLD_THAWED -> {
+                    if (frozenAt != Long.MIN_VALUE) {
+                        frozenOut.add(new Span(frozenAt, e.timeNanos(), frozenText));
+                        frozenAt = Long.MIN_VALUE;
+                    }
+                }
                 case HOLD_ON -> {
                     if (on == Long.MIN_VALUE) {
                         on = e.timeNanos();
@@ -62,6 +78,10 @@ public final class HoldMarks {
             out.add(new Span(on, Math.max(on, endNanos), why)); // the log ended while held
         }
         spans = List.copyOf(out);
+        if (frozenAt != Long.MIN_VALUE) {
+            frozenOut.add(new Span(frozenAt, Math.max(frozenAt, endNanos), frozenText));
+        }
+        frozen = List.copyOf(frozenOut);
     }
 
     public static HoldMarks none() {
@@ -70,6 +90,11 @@ public final class HoldMarks {
 
     public List<Span> spans() {
         return spans;
+    }
+
+    /** The times the session's simulated world stood still (docs/debugging-robots.md, "The frozen world"). */
+    public List<Span> frozenSpans() {
+        return frozen;
     }
 
     public List<Long> injectedTimes() {
@@ -98,7 +123,7 @@ public final class HoldMarks {
     }
 
     public boolean isEmpty() {
-        return spans.isEmpty() && injected.isEmpty() && heldBack.isEmpty() && breaks.isEmpty();
+        return spans.isEmpty() && frozen.isEmpty() && injected.isEmpty() && heldBack.isEmpty() && breaks.isEmpty();
     }
 
     private static long key(int conn, long offset) {

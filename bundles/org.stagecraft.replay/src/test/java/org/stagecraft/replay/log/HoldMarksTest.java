@@ -22,8 +22,7 @@ class HoldMarksTest {
     Path tmp;
 
     private static HoldEntry e(long t, int conn, Action a, long programOffset, String text) {
-        return new HoldEntry(t, conn, conn == 0 ? 0 : 6665, a, programOffset, programOffset, new byte[a == Action.HOLD_ON
-                || a == Action.HOLD_OFF ? 0 : 48], text);
+        return new HoldEntry(t, conn, conn == 0 ? 0 : 6665, a, programOffset, programOffset, new byte[conn == 0 ? 0 : 48], text);
     }
 
     private static LogMessage program(int conn, Direction dir, long offset) {
@@ -66,6 +65,27 @@ class HoldMarksTest {
         }
         try (SessionLog log = SessionLogs.open(file)) {
             assertEquals(List.of(Action.BREAK, Action.PASSED_ON), log.holdEntries().stream().map(HoldEntry::action).toList());
+        }
+    }
+
+    @Test
+    void frozenWorldsAreSpansOfTheirOwnWrittenAndReadBack() throws Exception {
+        Path file = tmp.resolve("frozen.mcap");
+        try (SpyLogWriter w = SpyLogWriter.create(file, Map.of())) {
+            w.connectionOpened(1_000, 1, "127.0.0.1:40000", "127.0.0.1:6665", "127.0.0.1:7665");
+            w.hold(e(2_000, 0, Action.HOLD_ON, 0, "suspended in the debugger"));
+            w.hold(e(2_100, 0, Action.WORLD_FROZEN, 0, "world frozen at simulated time 12.300 s"));
+            w.hold(e(5_000, 0, Action.WORLD_THAWED, 0, "world runs on"));
+            w.hold(e(5_050, 0, Action.HOLD_OFF, 0, ""));
+            w.hold(e(6_000, 0, Action.WORLD_FROZEN, 0, "world frozen at simulated time 15.000 s"));
+            w.connectionClosed(7_000, 1, "done");
+        }
+        try (SessionLog log = SessionLogs.open(file)) {
+            HoldMarks m = new HoldMarks(log.holdEntries(), 9_000);
+            assertEquals(List.of(new HoldMarks.Span(2_100, 5_000, "world frozen at simulated time 12.300 s"),
+                    new HoldMarks.Span(6_000, 9_000, "world frozen at simulated time 15.000 s")), m.frozenSpans(),
+                    "a world still frozen at the end is drawn to the log's end");
+            assertEquals(List.of(new HoldMarks.Span(2_000, 5_050, "suspended in the debugger")), m.spans(), "holds are their own spans");
         }
     }
 

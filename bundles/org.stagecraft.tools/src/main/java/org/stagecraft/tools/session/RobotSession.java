@@ -251,6 +251,11 @@ public final class RobotSession implements AutoCloseable {
             worldProblem = "Player runs no Stage world here (no \"stage\" driver in " + cfg.file().getFileName() + ")";
             return -1;
         }
+        if (!isPlayer(config.playerCommand().get(0))) {
+            // a stand-in that reads Player's cfg (the recorded Player of the demo) has no world to freeze
+            worldProblem = config.playerCommand().get(0) + " is not Player: no simulated world to freeze";
+            return -1;
+        }
         try {
             Path library = WorldDriver.build(config.playerCommand().get(0), config.playerEnvironment(), WorldDriver.defaultCache());
             Files.writeString(copy, WorldDriver.cfgSection(library, port), StandardCharsets.UTF_8, StandardOpenOption.APPEND);
@@ -261,6 +266,12 @@ public final class RobotSession implements AutoCloseable {
                     + e.getMessage());
             return -1;
         }
+    }
+
+    /** Whether the session's Player program is Player itself ({@code player}, by name or path). */
+    static boolean isPlayer(String program) {
+        Path name = Path.of(program).getFileName();
+        return name != null && name.toString().equals("player");
     }
 
     /** Whether a driver of the cfg is Stage's ({@code name "stage"}). */

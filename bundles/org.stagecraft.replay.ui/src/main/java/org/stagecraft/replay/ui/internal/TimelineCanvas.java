@@ -205,11 +205,12 @@ public final class TimelineCanvas {
     }
 
     /**
-     * Lavender band while held (under the other marks), a violet tick per injected zero command, a lighter one per
+     * Lavender band while held (under the other marks), its lower half ice blue while the simulated world stood
+     * still, a violet tick per injected zero command, a lighter one per
      * held-back message, a red one the whole height of the row where a robot data breakpoint stopped.
      */
     static final int[] HOLD_BAND = { 226, 214, 248 }, INJECTED = { 120, 40, 200 }, HELD_BACK = { 170, 130, 230 },
-            BREAK = { 210, 30, 30 };
+            BREAK = { 210, 30, 30 }, FROZEN = { 150, 200, 235 };
 
     private void drawHolds(GC gc, int y) {
         if (holds.isEmpty()) {
@@ -219,6 +220,11 @@ public final class TimelineCanvas {
         for (HoldMarks.Span sp : holds.spans()) {
             int x0 = xOf(sp.startNanos()), x1 = Math.max(x0 + 1, xOf(sp.endNanos()));
             gc.fillRectangle(x0, y, x1 - x0, MARKS);
+        }
+        gc.setBackground(new Color(FROZEN[0], FROZEN[1], FROZEN[2]));
+        for (HoldMarks.Span sp : holds.frozenSpans()) {
+            int x0 = xOf(sp.startNanos()), x1 = Math.max(x0 + 1, xOf(sp.endNanos()));
+            gc.fillRectangle(x0, y + MARKS / 2, x1 - x0, MARKS - MARKS / 2);
         }
         gc.setForeground(new Color(HELD_BACK[0], HELD_BACK[1], HELD_BACK[2]));
         for (long t : holds.heldBackTimes()) {

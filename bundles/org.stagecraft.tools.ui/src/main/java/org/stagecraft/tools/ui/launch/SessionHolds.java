@@ -9,6 +9,8 @@ import org.eclipse.debug.core.ILaunch;
 import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.spy.hold.HoldListener;
 import org.stagecraft.spy.hold.HoldState;
+import org.stagecraft.tools.world.WorldFreeze;
+import org.stagecraft.tools.world.WorldState;
 import org.stagecraft.spy.hold.RobotHold;
 import org.stagecraft.spy.proxy.NetworkSpy;
 import org.stagecraft.tools.process.ToolState;
@@ -33,10 +35,13 @@ public final class SessionHolds implements AutoCloseable {
     private final @Nullable SuspendHold suspend;
     private final @Nullable SessionDataBreakpoints dataBreakpoints;
     private final HoldListener toToolsView = this::show;
+    private final @Nullable WorldFreeze world;
+    private final WorldFreeze.Listener worldToToolsView = (state, problem) -> show(hold().state());
 
     private SessionHolds(SessionParts parts, RobotHold hold, @Nullable SuspendHold suspend,
-            @Nullable SessionDataBreakpoints dataBreakpoints) {
+            @Nullable SessionDataBreakpoints dataBreakpoints, @Nullable WorldFreeze world) {
         this.parts = parts;
+        this.world = world;
         this.hold = hold;
         this.suspend = suspend;
         this.dataBreakpoints = dataBreakpoints;
@@ -52,8 +57,12 @@ public final class SessionHolds implements AutoCloseable {
         SessionDataBreakpoints data = spy.dataBreakpoints().isEnabled()
                 ? new SessionDataBreakpoints(spy.dataBreakpoints(), parts::launches, parts::spyConsole).start()
                 : null;
-        SessionHolds h = new SessionHolds(parts, hold, suspend, data);
+        WorldFreeze world = session.world();
+        SessionHolds h = new SessionHolds(parts, hold, suspend, data, world);
         hold.addListener(h.toToolsView);
+        if (world != null) {
+            world.addListener(h.worldToToolsView);
+        }
         RUNNING.put(parts, h);
         EmergencyStop.get().register(hold);
         h.show(hold.state());
@@ -100,14 +109,21 @@ public final class SessionHolds implements AutoCloseable {
         }
     }
 
-    /** The Tools view's session row: running, and whether the robots are held and why. */
+    /** The Tools view's session row: running, whether the robots are held and why, and whether the world is frozen. */
     private void show(HoldState s) {
         ToolsModel.Row row = ToolsModel.get().find(parts.sessionName(), SessionParts.SESSION_PART);
         if (row != null && row.state() != ToolState.READY) {
             return; // failed or stopped: that is what the row must keep saying
         }
         ToolsModel.get().update(new ToolsModel.Row(parts.sessionName(), SessionParts.SESSION_PART, ToolState.READY, -1, 0,
-                null, detail(s)));
+                null, detail(s) + worldDetail()));
+    }
+
+    /** " — world frozen at simulated time 12.300 s" while the world driver holds the world still, else "". */
+    private String worldDetail() {
+        WorldFreeze w = world;
+        WorldState last = w == null ? null : w.last();
+        return last != null && last.frozen() ? " — world frozen at simulated time " + last.simTime() : "";
     }
 
     private static final String HELD = "held — ";
@@ -133,6 +149,9 @@ public final class SessionHolds implements AutoCloseable {
             dataBreakpoints.close();
         }
         hold.removeListener(toToolsView);
+        if (world != null) {
+            world.removeListener(worldToToolsView);
+        }
         EmergencyStop.get().unregister(hold);
     }
 }
