@@ -60,6 +60,7 @@ import org.stagecraft.spy.hold.HoldReason;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.SpyLogReader;
+import org.stagecraft.tools.world.WorldFreeze;
 import org.stagecraft.tools.ui.launch.EmergencyStop;
 import org.stagecraft.tools.ui.launch.LaunchAttributes;
 import org.stagecraft.tools.ui.launch.RobotSessionLaunchDelegate;
@@ -127,6 +128,19 @@ class RealStageHoldTest {
                     p = sim.get_pose2d("r0")
                     print("POSE %d %.5f %.5f %.5f" % (time.monotonic_ns(), p.px, p.py, p.pa), flush=True)
                     time.sleep(0.01)  # sampling period (~20 Hz with Player's own turnaround); not a synchronisation
+            """;
+
+    /** Both robots' poses and Stage's simulated time (GET_POSE3D answers it), stamped with CLOCK_MONOTONIC. */
+    private static final String WORLD_POSES = """
+            import sys, time
+            from stagecraft_player import Client
+            with Client("127.0.0.1", int(sys.argv[1])) as c:
+                sim = c.simulation(0)
+                while True:
+                    p0, t0 = sim.get_pose3d("r0")
+                    p1, t1 = sim.get_pose3d("r1")
+                    print("WORLD %d %r %.6f %.6f %.6f %.6f" % (time.monotonic_ns(), t1, p0.px, p0.py, p1.px, p1.py), flush=True)
+                    time.sleep(0.05)  # sampling period; not a synchronisation
             """;
 
     /** The data breakpoint's program: drives straight on at 0.4 m/s, writing down each laser scan it reads. */
@@ -252,6 +266,132 @@ class RealStageHoldTest {
             assertTrue(s.resumeMovedMs >= 0, "the robot moved again after resume: " + s);
             assertTrue(s.injectedMs >= 0 && s.injectedMs < 200, "the zero CMD_VEL went to Player within 200 ms of the SUSPEND event: " + s);
         }
+    }
+
+    /**
+     * Issue 27, the frozen world: two-robots.cfg, r0 driven by the program under PyDev's debugger, r1 by Stage's own
+     * pioneer_flocking controller. Suspended 5 s at a real breakpoint: with the option on, simulated time advances by
+     * at most one Stage update (100 ms) and no model moves by more than 1 mm, and after Resume both robots move and
+     * time runs; with it off, r1 drives on and time runs while r0 is held.
+     */
+    @Test
+    void atABreakpointTheWholeSimulatedWorldStandsStillAndRunsOnAfterResume() throws Exception {
+        double[] on = suspendedFiveSecondsInTheTwoRobotWorld(true);
+        report(String.format(java.util.Locale.ROOT, "frozen world on, suspended 5 s at a PyDev breakpoint: simulated time +%.3f s, "
+                + "largest model move %.4f mm, hold -> world frozen %.1f ms", on[0], on[1] * 1000, on[2]));
+        assertTrue(on[0] <= 0.100 + 1e-9, "simulated time advanced by at most one update while suspended: " + on[0] + " s");
+        assertTrue(on[1] <= 0.001, "no model moved more than 1 mm while suspended: " + on[1] + " m");
+        double[] off = suspendedFiveSecondsInTheTwoRobotWorld(false);
+        report(String.format(java.util.Locale.ROOT, "frozen world off, suspended 5 s: simulated time +%.3f s, r1 (Stage's controller) "
+                + "moved %.3f m", off[0], off[3]));
+        assertTrue(off[0] > 3.0, "with the option off simulated time runs on: " + off[0] + " s");
+        assertTrue(off[3] > 0.1, "with the option off r1 drives on: " + off[3] + " m");
+    }
+
+    /**
+     * One suspension of 5 s in two-robots.cfg: [simulated time advanced (s), largest move of either robot (m), hold to
+     * world frozen (ms, or -1), r1's move (m)]; after Resume, waits until both robots move again and time runs.
+     */
+    private double[] suspendedFiveSecondsInTheTwoRobotWorld(boolean freeze) throws Exception {
+        DebugPlugin.getDefault().getBreakpointManager().removeBreakpoints(
+                DebugPlugin.getDefault().getBreakpointManager().getBreakpoints(), true); // the earlier run's
+        IFile robot = write(project, "robot.py", ROBOT);
+        int line = lineOf(ROBOT, BREAK_MARK);
+        breakpointAsPyDevsRulerMakesIt(robot, line);
+        Path mark = tmp.resolve("mark-" + freeze);
+        try (DebugEvents events = new DebugEvents()) {
+            ILaunchConfigurationWorkingCopy wc = config(true, false, 500, Map.of("MARK_EVERY", "2.5", "MARKS", "1", "MARK",
+                    mark.toString()));
+            wc.setAttribute(LaunchAttributes.CFG, project.getFile("worlds/two-robots.cfg").getFullPath().toString());
+            wc.setAttribute(LaunchAttributes.FREEZE_WORLD, freeze);
+            ILaunch launch = launch(wc, ILaunchManager.DEBUG_MODE);
+            SessionParts parts = RobotSessionLaunchDelegate.partsOf(launch);
+            assertNotNull(parts, "the launch is a running Robot Session");
+            WorldFreeze world = parts.session().world();
+            assertEquals(freeze, world != null, "a world driver exactly when the option is on: " + parts.session().worldProblem());
+            long[] heldAt = {-1};
+            long[] frozenAt = {-1};
+            if (world != null) {
+                world.addListener((state, problem) -> {
+                    if (state.frozen() && frozenAt[0] < 0) {
+                        frozenAt[0] = System.nanoTime();
+                    }
+                });
+                SessionHolds.of(launch).hold().addListener(st -> {
+                    if (st.held() && heldAt[0] < 0) {
+                        heldAt[0] = System.nanoTime();
+                    }
+                });
+            }
+            int moved = parts.session().portMap().values().iterator().next();
+            Path script = Files.writeString(tmp.resolve("world-poses.py"), WORLD_POSES);
+            Proc poses = start("world poses", List.of(python, "-u", script.toString(), String.valueOf(moved)), Map.of("PYTHONPATH",
+                    clientFolder()));
+            DebugEvent suspend = events.await("the suspension at the breakpoint", WAIT, e -> e.getKind() == DebugEvent.SUSPEND
+                    && e.getDetail() == DebugEvent.BREAKPOINT && e.getSource() instanceof IThread);
+            long arrival = events.arrival(suspend)[0];
+            IThread thread = (IThread) suspend.getSource();
+            assertEquals(line, thread.getTopStackFrame().getLineNumber(), "suspended at the breakpoint's line");
+            if (freeze) {
+                Await.until("the world to freeze", WAIT, () -> world.last() != null && world.last().frozen(), poses::output);
+            }
+            // the suspension under test: from 0.5 s after the SUSPEND event (the hold and the freeze are done by then) for 5 s
+            long from = arrival + 500 * MS;
+            long until = from + 5000 * MS;
+            Await.until("world samples for 5 s of the suspension", Duration.ofSeconds(30),
+                    () -> worldSamples(poses).stream().anyMatch(w -> w[0] > until), poses::output);
+            List<double[]> window = worldSamples(poses).stream().filter(w -> w[0] >= from && w[0] <= until).toList();
+            assertTrue(window.size() > 20, "sampled the world through the suspension: " + window.size());
+            double[] first = window.get(0);
+            double maxMove = 0;
+            for (double[] w : window) {
+                maxMove = Math.max(maxMove, Math.max(Math.hypot(w[2] - first[2], w[3] - first[3]), Math.hypot(w[4] - first[4], w[5] - first[5])));
+            }
+            double[] last = window.get(window.size() - 1);
+            double timeAdvanced = last[1] - first[1];
+            double r1Moved = Math.hypot(last[4] - first[4], last[5] - first[5]);
+            assertTrue(SessionHolds.of(launch).hold().isHeld(), "still held at the end of the window");
+            thread.resume();
+            DebugEvent resume = events.await("the resume", WAIT, e -> e.getSource() == thread && e.getKind() == DebugEvent.RESUME);
+            long resumed = events.arrival(resume)[0];
+            Await.until("both robots to move and time to run after Resume", WAIT, () -> {
+                List<double[]> after = worldSamples(poses).stream().filter(w -> w[0] > resumed).toList();
+                if (after.size() < 2) {
+                    return false;
+                }
+                double[] a = after.get(0);
+                double[] b = after.get(after.size() - 1);
+                return b[1] > a[1] && Math.hypot(b[2] - a[2], b[3] - a[3]) > 0.05 && Math.hypot(b[4] - a[4], b[5] - a[5]) > 0.05;
+            }, poses::output);
+            launch.terminate();
+            Await.until("the session to end", WAIT, () -> launch.isTerminated() && parts.session().isClosed(), () -> "");
+            poses.close();
+            procs.remove(poses);
+            if (freeze) {
+                try (SpyLogReader r = SpyLogReader.open(spyLog())) {
+                    List<HoldEntry> holds = r.holdEntries();
+                    assertTrue(holds.stream().anyMatch(e -> e.action() == HoldEntry.Action.WORLD_FROZEN
+                            && e.text().contains("suspended in the debugger")), "the freeze is in the spy log: " + holds);
+                    assertTrue(holds.stream().anyMatch(e -> e.action() == HoldEntry.Action.WORLD_THAWED), "the thaw is in the spy log");
+                }
+                Files.delete(spyLog()); // the next run's session writes the one log again
+            }
+            return new double[] { timeAdvanced, maxMove, frozenAt[0] > 0 && heldAt[0] > 0 ? (frozenAt[0] - heldAt[0]) / 1e6 : -1,
+                    r1Moved };
+        }
+    }
+
+    /** The world reader's samples: [monotonic ns, simulated time s, r0 x, r0 y, r1 x, r1 y]. */
+    private static List<double[]> worldSamples(Proc poses) {
+        List<double[]> out = new ArrayList<>();
+        for (String l : poses.lines) {
+            if (l.startsWith("WORLD ")) {
+                String[] f = l.split(" ");
+                out.add(new double[] { Long.parseLong(f[1]), Double.parseDouble(f[2]), Double.parseDouble(f[3]), Double.parseDouble(f[4]),
+                        Double.parseDouble(f[5]), Double.parseDouble(f[6]) });
+            }
+        }
+        return out;
     }
 
     @Test
@@ -434,6 +574,13 @@ class RealStageHoldTest {
             assertTrue(toZero[toZero.length - 1] < 50, "zero velocity went to Player within 50 ms of every hit: " + Arrays.toString(toZero));
             report(String.format(Locale.ROOT, "data breakpoint: message at the spy -> zero CMD_VEL to Player (spy log) p50 %.2f ms, max %.2f ms",
                     toZero[toZero.length / 2], toZero[toZero.length - 1]));
+            // and the world frozen after it (the world driver's answer, logged by the session on the spy's clock)
+            double[] toFrozen = breaks.stream().mapToDouble(b -> holds.stream().filter(e -> e.action() == HoldEntry.Action.WORLD_FROZEN
+                    && e.timeNanos() >= b.timeNanos()).mapToLong(e -> e.timeNanos() - b.timeNanos()).min().orElse(Long.MAX_VALUE) / 1e6)
+                    .sorted().toArray();
+            assertTrue(toFrozen[toFrozen.length - 1] < 1000, "the world froze within a second of every hit: " + Arrays.toString(toFrozen));
+            report(String.format(Locale.ROOT, "data breakpoint: message at the spy -> world frozen (spy log) p50 %.1f ms, p99 %.1f ms, max %.1f ms",
+                    toFrozen[toFrozen.length / 2], toFrozen[(int) Math.ceil(toFrozen.length * 0.99) - 1], toFrozen[toFrozen.length - 1]));
             java.util.Set<Long> heldBack = new java.util.HashSet<>();
             holds.stream().filter(e -> e.action() == HoldEntry.Action.HELD_BACK).forEach(e -> heldBack.add(e.programOffset()));
             for (HoldEntry b : breaks) {
