@@ -39,7 +39,7 @@ class Simulation(Proxy):
         self._request(REQ_SET_POSE2D, body.to_bytes())
 
     def get_pose3d(self, name: str) -> tuple[Pose3d, float]:
-        """The model's pose and the simulation time [s]."""
+        """The model's pose and the simulation time as the simulator gives it (Stage 4.3: microseconds)."""
         body = XdrWriter().string(name)
         Pose3d().write(body)
         r = self._reader(self._request(REQ_GET_POSE3D, body.float64(0.0).to_bytes()), "GET_POSE3D")

@@ -130,7 +130,7 @@ class RealStageHoldTest {
                     time.sleep(0.01)  # sampling period (~20 Hz with Player's own turnaround); not a synchronisation
             """;
 
-    /** Both robots' poses and Stage's simulated time (GET_POSE3D answers it), stamped with CLOCK_MONOTONIC. */
+    /** Both robots' poses and Stage's simulated time in seconds (GET_POSE3D answers it, in microseconds), stamped with CLOCK_MONOTONIC. */
     private static final String WORLD_POSES = """
             import sys, time
             from stagecraft_player import Client
@@ -139,7 +139,7 @@ class RealStageHoldTest {
                 while True:
                     p0, t0 = sim.get_pose3d("r0")
                     p1, t1 = sim.get_pose3d("r1")
-                    print("WORLD %d %r %.6f %.6f %.6f %.6f" % (time.monotonic_ns(), t1, p0.px, p0.py, p1.px, p1.py), flush=True)
+                    print("WORLD %d %r %.6f %.6f %.6f %.6f" % (time.monotonic_ns(), t1 / 1e6, p0.px, p0.py, p1.px, p1.py), flush=True)
                     time.sleep(0.05)  # sampling period; not a synchronisation
             """;
 

@@ -160,6 +160,10 @@ class RobotDataBreakpointLaunchTest {
         assertTrue(hit.why().startsWith("laser:0 min(ranges) = "), hit.why());
         Await.until("the program's debug target was asked to suspend", WAIT, () -> program.suspendRequests.get() == 1);
         assertTrue(hold.reasons().containsKey(HoldReason.DATA_BREAKPOINT), hold.reasons().toString());
+        // the Debug view says why: the session's Network Spy line carries the breakpoint and its values
+        String spyLine = parts.part(SessionParts.SPY_PART).getLabel();
+        assertTrue(spyLine.startsWith("Network Spy — stopped at robot data breakpoint: laser:0 min(ranges) < 1.0 (laser:0 min(ranges) = "),
+                spyLine);
         assertFalse(hit.passedOn(), "the message waits for the program to be suspended");
         assertFalse(client.isDone());
 
@@ -176,6 +180,8 @@ class RobotDataBreakpointLaunchTest {
                 FakeDebug.event(program.threads.get(0), DebugEvent.RESUME, DebugEvent.CLIENT_REQUEST));
         assertNull(spy.current(), "Resume ends the hit");
         assertFalse(hold.reasons().containsKey(HoldReason.DATA_BREAKPOINT), hold.reasons().toString());
+        Await.until("the spy's line to lose the reason once the hit ends", WAIT,
+                () -> parts.part(SessionParts.SPY_PART).getLabel().equals(SessionParts.SPY_PART), () -> parts.part(SessionParts.SPY_PART).getLabel());
 
         // a program that only stops once its read returns: the message goes on a settle time after the request
         parts.holds().dataBreakpoints().suspendSettle(Duration.ofMillis(100));

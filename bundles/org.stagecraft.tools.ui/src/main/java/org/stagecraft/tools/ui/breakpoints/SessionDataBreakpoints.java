@@ -42,6 +42,7 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
     private final DataBreakpoints spy;
     private final Supplier<List<ILaunch>> launches;
     private final Consumer<String> say;
+    private final Consumer<String> status;
     /** The hit waiting for the program to be suspended, or null. */
     private volatile @Nullable BreakpointHit waiting;
     private volatile @Nullable List<IDebugTarget> suspending;
@@ -53,11 +54,14 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
     /**
      * @param launches the session's launch and those linked to it, asked at each hit
      * @param say      a line for the session's spy console
+     * @param status   why the session stopped its program, for the spy's line in the Debug view ("" when the hit ends)
      */
-    public SessionDataBreakpoints(DataBreakpoints spy, Supplier<List<ILaunch>> launches, Consumer<String> say) {
+    public SessionDataBreakpoints(DataBreakpoints spy, Supplier<List<ILaunch>> launches, Consumer<String> say,
+            Consumer<String> status) {
         this.spy = spy;
         this.launches = launches;
         this.say = say;
+        this.status = status;
     }
 
     public SessionDataBreakpoints start() {
@@ -122,6 +126,7 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
                 + (targets.isEmpty() ? "; the program is not being debugged, so it runs on (Resume Robots in the Tools view releases)"
                         : "; suspending the program"));
         RobotDataBreakpoints.get().hit(hit);
+        status.accept("stopped at " + hit.description());
         if (targets.isEmpty()) {
             return; // the spy's bound lets the message go on
         }
@@ -157,6 +162,7 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
     @Override
     public void resumed(BreakpointHit hit) {
         say.accept("robot data breakpoint ended: the robots move again");
+        status.accept("");
     }
 
     // ---- the debugger ------------------------------------------------------------------------------

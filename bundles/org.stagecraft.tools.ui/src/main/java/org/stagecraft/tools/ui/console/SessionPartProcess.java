@@ -51,6 +51,7 @@ public final class SessionPartProcess implements IProcess {
     };
     private volatile boolean terminated;
     private volatile int exitValue;
+    private volatile String status = "";
 
     public SessionPartProcess(String label, String type, ILaunch launch, Control control) {
         this.label = label;
@@ -92,9 +93,27 @@ public final class SessionPartProcess implements IProcess {
         }
     }
 
+    /**
+     * What the part is doing that the Debug view should say on its line, e.g. why the session stopped its
+     * program ("" for nothing): the line reads "LABEL — STATUS".
+     */
+    public void status(String text) {
+        String t = text == null ? "" : text;
+        if (t.equals(status)) {
+            return;
+        }
+        status = t;
+        fire(DebugEvent.CHANGE);
+    }
+
+    public String status() {
+        return status;
+    }
+
     @Override
     public String getLabel() {
-        return label;
+        String s = status;
+        return s.isEmpty() ? label : label + " — " + s;
     }
 
     @Override

@@ -55,7 +55,7 @@ public final class SessionHolds implements AutoCloseable {
                 : null;
         NetworkSpy spy = Objects.requireNonNull(session.spy());
         SessionDataBreakpoints data = spy.dataBreakpoints().isEnabled()
-                ? new SessionDataBreakpoints(spy.dataBreakpoints(), parts::launches, parts::spyConsole).start()
+                ? new SessionDataBreakpoints(spy.dataBreakpoints(), parts::launches, parts::spyConsole, parts::spyStatus).start()
                 : null;
         WorldFreeze world = session.world();
         SessionHolds h = new SessionHolds(parts, hold, suspend, data, world);

@@ -173,6 +173,17 @@ public final class SessionParts implements ToolListener {
         }
     }
 
+    /**
+     * What the Network Spy's line in the Debug view says beside its name, e.g. "stopped at robot data breakpoint:
+     * laser:0 min(ranges) = 0.287 m < 0.3 m" while a hit holds the program ("" to clear it).
+     */
+    public void spyStatus(String text) {
+        SessionPartProcess p = spy;
+        if (p != null) {
+            p.status(text);
+        }
+    }
+
     /** The session's robot hold in the IDE (null until the session runs). */
     public @Nullable SessionHolds holds() {
         return holds;
