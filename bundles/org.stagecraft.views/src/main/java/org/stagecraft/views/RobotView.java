@@ -1,5 +1,6 @@
 package org.stagecraft.views;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -36,6 +37,9 @@ import org.stagecraft.scene.ViewSetup;
 import org.stagecraft.scene.SharedWorld;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.views.internal.RedrawThrottle;
+import org.stagecraft.views.internal.SensorConditions;
+import org.stagecraft.streams.StreamMessage;
+import org.eclipse.jface.dialogs.MessageDialog;
 import org.stagecraft.views.internal.ViewMemento;
 
 import com.jogamp.opengl.GL2;
@@ -110,6 +114,7 @@ public class RobotView extends ViewPart {
         canvas.addGLEventListener(new Drawer());
         installMouse();
         installMenu();
+        installContextMenu();
         scene.connect(bus, false); // the world model is the bus's shared one
         followHolds();
         var display = parent.getDisplay();
@@ -388,6 +393,44 @@ public class RobotView extends ViewPart {
         });
         // the menu must exist before the first "about to show"
         menu.add(new Separator());
+    }
+
+    /**
+     * The canvas's context menu: Break When, one robot data breakpoint per sensor shown now (its value now as the
+     * threshold, to edit in the breakpoint's dialog), and the camera's actions.
+     */
+    private void installContextMenu() {
+        MenuManager context = new MenuManager();
+        context.setRemoveAllWhenShown(true);
+        context.addMenuListener(m -> {
+            MenuManager breakWhen = new MenuManager("Break When");
+            for (String offer : breakWhenOffers()) {
+                breakWhen.add(action(offer + "...", IAction.AS_PUSH_BUTTON, false,
+                        () -> RobotDataBreakpointCommand.ask(offer, problem -> MessageDialog.openInformation(canvas.getShell(),
+                                "Robot Data Breakpoint", problem))));
+            }
+            if (breakWhen.isEmpty()) {
+                IAction none = action("(no sensor data shown)", IAction.AS_PUSH_BUTTON, false, () -> {
+                });
+                none.setEnabled(false);
+                breakWhen.add(none);
+            }
+            m.add(breakWhen);
+            m.add(new Separator());
+            m.add(action("Centre on robots", IAction.AS_PUSH_BUTTON, false, this::centreOnRobots));
+        });
+        canvas.setMenu(context.createContextMenu(canvas));
+    }
+
+    /** The robot data breakpoints the context menu's Break When offers now: one per sensor the visible layers show. */
+    public List<String> breakWhenOffers() {
+        List<StreamMessage> shown = new ArrayList<>();
+        for (LayerSpec l : scene.layers()) {
+            if (l.visible()) {
+                shown.addAll(scene.feed(l.id()).snapshot());
+            }
+        }
+        return SensorConditions.offers(shown);
     }
 
     private MenuManager layerMenu(LayerSpec l) {

@@ -65,7 +65,7 @@ class RealPlayerSessionTest {
     private final ToolListener listener = new ToolListener() {
         @Override
         public void output(SupervisedTool tool, Stream stream, String line) {
-            console.add(tool.name() + "|" + stream + "|" + line);
+            console.add((tool == null ? "session" : tool.name()) + "|" + stream + "|" + line); // null: the session itself
         }
 
         @Override

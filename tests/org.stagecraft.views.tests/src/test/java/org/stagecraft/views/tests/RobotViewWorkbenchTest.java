@@ -176,6 +176,19 @@ class RobotViewWorkbenchTest {
             assertEquals(16, v.scene().world().mount(new org.stagecraft.scene.DeviceAddress(robot, 62, 0)).elements().size(),
                     "the sonar geometry came off the wire");
         }
+        // the context menu's Break When: a robot data breakpoint per sensor shown, its value now as the threshold
+        org.stagecraft.player.msg.Laser.Scan scan = (org.stagecraft.player.msg.Laser.Scan) org.stagecraft.scene.Payloads.body(
+                a.scene().feed("laser").snapshot().stream().filter(m -> RobotId.of(m.key()).equals(robot)).findFirst().orElseThrow());
+        float nearest = Float.POSITIVE_INFINITY;
+        for (float r : scan.ranges().toArray()) {
+            nearest = Math.min(nearest, r);
+        }
+        String laserOffer = "laser:0 min(ranges) < " + java.math.BigDecimal.valueOf(nearest).setScale(2, java.math.RoundingMode.HALF_UP)
+                .stripTrailingZeros().toPlainString();
+        List<String> offers = a.breakWhenOffers();
+        assertTrue(offers.contains(laserOffer), "Break When offers " + laserOffer + ": " + offers);
+        assertTrue(offers.contains("position2d:0 stall == 1"), offers.toString());
+        assertTrue(offers.stream().anyMatch(o -> o.startsWith("ranger:0 min(ranges) < ")), "the sonar ring (ranger:0): " + offers);
         // a view opened after the session knows its sensors: the geometry replies came long before it
         RobotView late = show("late");
         assertTrue(late.scene().world().robot(robot).poseSeen());

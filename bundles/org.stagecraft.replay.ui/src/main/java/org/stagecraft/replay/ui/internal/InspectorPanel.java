@@ -1,5 +1,6 @@
 package org.stagecraft.replay.ui.internal;
 
+import org.stagecraft.views.RobotDataBreakpointCommand;
 import java.io.IOException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.atomic.AtomicLong;
@@ -148,7 +149,7 @@ public final class InspectorPanel {
         add.addListener(SWT.Selection, e -> {
             String text = breakpointText();
             if (text != null) {
-                AddDataBreakpoint.ask(text, status);
+                RobotDataBreakpointCommand.ask(text, status::setText);
             }
         });
         return menu;
