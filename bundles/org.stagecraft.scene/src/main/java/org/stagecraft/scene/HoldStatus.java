@@ -4,9 +4,11 @@ import java.util.EnumMap;
 import java.util.stream.Collectors;
 
 import org.eclipse.jdt.annotation.Nullable;
+import org.stagecraft.spy.hold.HoldAction;
 import org.stagecraft.spy.hold.HoldReason;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.hold.HoldStreams;
+import org.stagecraft.spy.hold.WorldChange;
 import org.stagecraft.streams.DeliveryPolicy;
 import org.stagecraft.streams.StreamBus;
 import org.stagecraft.streams.StreamMessage;
@@ -16,23 +18,54 @@ import org.stagecraft.streams.Subscription;
 /**
  * Whether the robots of a bus are held by their spy, for a view to say so on top of the robots: follows
  * the {@link HoldStreams#STATE} stream, starting from the last state the bus carried (a view opened while
- * the program is suspended shows "HELD" at once).
+ * the program is suspended shows "HELD" at once), whether the session froze its simulated world
+ * ({@link HoldStreams#WORLD}), and the robot data breakpoint that stopped it, with the values it read
+ * ({@link HoldStreams#breaks()}).
  *
  * <p>One state per bus: every session's spy publishes on the same key, so with two sessions on the
  * workbench bus the newest change wins.
  */
 public final class HoldStatus implements AutoCloseable {
     private static final StreamPattern STATE = StreamPattern.exactly(HoldStreams.STATE);
+    private static final StreamPattern WORLD = StreamPattern.exactly(HoldStreams.WORLD);
 
     private final Runnable onChange;
     private volatile @Nullable HoldState state;
+    private volatile boolean worldFrozen;
+    private volatile @Nullable String lastBreak;
     private final Subscription subscription;
+    private final Subscription world;
+    private final Subscription breaks;
 
     /** @param onChange told (on a bus thread) after each change, e.g. to request a redraw */
     public HoldStatus(StreamBus bus, Runnable onChange) {
         this.onChange = onChange;
-        LastMessages.find(bus).ifPresent(store -> store.matching(STATE).forEach(m -> state = stateOf(m)));
+        LastMessages.find(bus).ifPresent(store -> {
+            store.matching(STATE).forEach(m -> state = stateOf(m));
+            store.matching(WORLD).forEach(this::acceptWorld);
+            store.matching(HoldStreams.breaks()).forEach(this::acceptBreak);
+        });
         subscription = bus.subscribe(STATE, DeliveryPolicy.latestValue(), this::accept);
+        world = bus.subscribe(WORLD, DeliveryPolicy.latestValue(), m -> {
+            acceptWorld(m);
+            onChange.run();
+        });
+        breaks = bus.subscribe(HoldStreams.breaks(), DeliveryPolicy.latestValue(), m -> {
+            acceptBreak(m);
+            onChange.run();
+        });
+    }
+
+    private void acceptWorld(StreamMessage m) {
+        if (m.payload() instanceof WorldChange c) {
+            worldFrozen = c.frozen();
+        }
+    }
+
+    private void acceptBreak(StreamMessage m) {
+        if (m.payload() instanceof HoldAction a) {
+            lastBreak = a.text();
+        }
     }
 
     private void accept(StreamMessage m) {
@@ -54,7 +87,14 @@ public final class HoldStatus implements AutoCloseable {
 
     /** What a view draws over the robots: "HELD (suspended in the debugger)", or null when nothing is held. */
     public @Nullable String overlayText() {
-        return overlayText(state);
+        String held = overlayText(state);
+        if (held == null) {
+            return null;
+        }
+        HoldState s = state;
+        String b = lastBreak;
+        return held + (worldFrozen ? " — world frozen" : "")
+                + (b != null && s != null && s.reasons().containsKey(HoldReason.DATA_BREAKPOINT) ? " — " + b : "");
     }
 
     public static @Nullable String overlayText(@Nullable HoldState s) {
@@ -68,5 +108,7 @@ public final class HoldStatus implements AutoCloseable {
     @Override
     public void close() {
         subscription.close();
+        world.close();
+        breaks.close();
     }
 }

@@ -9,7 +9,9 @@ import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.Test;
+import org.stagecraft.spy.hold.HoldAction;
 import org.stagecraft.spy.hold.HoldReason;
+import org.stagecraft.spy.hold.WorldChange;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.hold.HoldStreams;
 import org.stagecraft.streams.StreamBus;
@@ -94,6 +96,32 @@ class LateSubscriberTest {
                 bus.publish(new StreamMessage(HoldStreams.STATE, 3, new HoldState(true, false, Map.of(), 0, 1)));
                 assertNull(status.overlayText(), "released: nothing drawn");
                 assertEquals(2, changes.get());
+            }
+        }
+    }
+
+    @Test
+    void theHoldOverlaySaysTheWorldIsFrozenAndWhichReadingStoppedTheProgram() {
+        try (StreamBus bus = new StreamBus(Runnable::run)) {
+            LastMessages.of(bus);
+            bus.publish(new StreamMessage(HoldStreams.STATE, 1,
+                    new HoldState(true, true, Map.of(HoldReason.DATA_BREAKPOINT, 1), 0, 1)));
+            org.stagecraft.spy.proxy.ConnectionInfo c = new org.stagecraft.spy.proxy.ConnectionInfo(1, 6665, "127.0.0.1:40000",
+                    "127.0.0.1:6665", "127.0.0.1:7665");
+            org.stagecraft.player.wire.MessageHeader h = new org.stagecraft.player.wire.MessageHeader(0, 6665, 6, 0, 1, 1, 12.3, 7, 0);
+            HoldAction hit = new HoldAction(c, org.stagecraft.spy.log.HoldEntry.Action.BREAK, 480, 480, h, new byte[40],
+                    "robot data breakpoint: laser:0 min(ranges) < 0.8 (laser:0 min(ranges) = 0.78 m)");
+            bus.publish(new StreamMessage(HoldStreams.actionKey(hit), 2, hit));
+            bus.publish(new StreamMessage(HoldStreams.WORLD, 3, new WorldChange(true, 12_300_000, "world frozen")));
+
+            // a view opened now (late) says all three at once
+            try (HoldStatus status = new HoldStatus(bus, () -> { })) {
+                assertEquals("HELD (robot data breakpoint) — world frozen — robot data breakpoint: laser:0 min(ranges) < 0.8 "
+                        + "(laser:0 min(ranges) = 0.78 m)", status.overlayText());
+                bus.publish(new StreamMessage(HoldStreams.WORLD, 4, new WorldChange(false, 12_300_000, "world runs on")));
+                bus.publish(new StreamMessage(HoldStreams.STATE, 5, new HoldState(true, true, Map.of(HoldReason.SUSPENDED, 1), 0, 1)));
+                assertEquals("HELD (suspended in the debugger)", status.overlayText(),
+                        "the breakpoint's reading is said only while it holds; the world runs again");
             }
         }
     }
