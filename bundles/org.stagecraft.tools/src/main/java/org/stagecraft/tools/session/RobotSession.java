@@ -291,7 +291,8 @@ public final class RobotSession implements AutoCloseable {
         try {
             WorldChannel channel = WorldChannel.open("127.0.0.1", port, WORLD_ANSWER_WITHIN);
             WorldState at = channel.get();
-            WorldFreeze w = new WorldFreeze(channel, s, line -> listener.output(null, ToolListener.Stream.SUPERVISOR, line));
+            WorldFreeze w = new WorldFreeze(channel, () -> WorldChannel.open("127.0.0.1", port, WORLD_ANSWER_WITHIN), s,
+                    line -> listener.output(null, ToolListener.Stream.SUPERVISOR, line));
             world = w;
             s.holds().addListener(w);
             listener.output(null, ToolListener.Stream.SUPERVISOR, "the simulated world freezes while robots are held (Stage "

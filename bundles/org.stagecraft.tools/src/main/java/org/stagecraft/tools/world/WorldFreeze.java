@@ -27,7 +27,13 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
         void worldChanged(WorldState state, @Nullable String problem);
     }
 
-    private final WorldChannel channel;
+    /** Opens a channel to the world driver (again after Player restarted). */
+    public interface Opener {
+        WorldChannel open() throws WorldException;
+    }
+
+    private final Opener opener;
+    private @Nullable WorldChannel channel; // only on the freezing thread
     private final NetworkSpy spy;
     private final Consumer<String> say;
     private final ExecutorService thread = Executors.newSingleThreadExecutor(r -> {
@@ -46,8 +52,9 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
     /**
      * @param say where the session tells its user what went wrong (its console)
      */
-    public WorldFreeze(WorldChannel channel, NetworkSpy spy, Consumer<String> say) {
+    public WorldFreeze(WorldChannel channel, Opener opener, NetworkSpy spy, Consumer<String> say) {
         this.channel = channel;
+        this.opener = opener;
         this.spy = spy;
         this.say = say;
     }
@@ -82,10 +89,11 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
             return;
         }
         try {
-            WorldState s = channel.set(want);
+            WorldState s = request(want);
             long now = System.nanoTime();
             frozen = want;
             last = s;
+            failedOnce = false; // a later failure is news again
             String text;
             if (want) {
                 frozenAtNanos = now;
@@ -112,6 +120,25 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
         }
     }
 
+    /**
+     * Asks the driver; when the channel has broken (Player was restarted by its restart policy, and with it the
+     * driver), opens a new one and asks once more.
+     */
+    private WorldState request(boolean frozenWanted) throws WorldException {
+        WorldChannel c = channel;
+        if (c != null) {
+            try {
+                return c.set(frozenWanted);
+            } catch (WorldException e) {
+                c.close();
+                channel = null;
+            }
+        }
+        WorldChannel fresh = opener.open();
+        channel = fresh;
+        return fresh.set(frozenWanted);
+    }
+
     /** Thaws the world if it is frozen (a session that ends leaves no frozen world behind), then closes the channel. */
     @Override
     public void close() {
@@ -120,12 +147,17 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
         } catch (java.util.concurrent.RejectedExecutionException e) {
             return; // closed already
         }
+        thread.execute(() -> {
+            WorldChannel c = channel;
+            if (c != null) {
+                c.close();
+            }
+        });
         thread.shutdown();
         try {
-            thread.awaitTermination(5, TimeUnit.SECONDS);
+            thread.awaitTermination(10, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        channel.close();
     }
 }

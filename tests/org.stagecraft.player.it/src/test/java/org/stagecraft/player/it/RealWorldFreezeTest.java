@@ -197,6 +197,37 @@ class RealWorldFreezeTest {
         }
     }
 
+    /** Player killed and restarted by its restart policy: the next hold still freezes the world (of the new Player). */
+    @Test
+    void afterPlayerIsRestartedTheWorldStillFreezes() throws Exception {
+        SessionConfig c = config(false, true).withPlayerRestart(RestartPolicy.onFailure(1), Duration.ofSeconds(30));
+        session = RobotSession.start(c, listener);
+        WorldFreeze world = session.world();
+        assertTrue(world != null, session.worldProblem());
+        LinkedBlockingQueue<WorldState> changes = new LinkedBlockingQueue<>();
+        world.addListener((s, problem) -> changes.add(s));
+        ProcessHandle first = session.player().process();
+        first.destroyForcibly();
+        assertTrue(PlayerStage.await(WAIT, () -> session.player().process() != null && session.player().process().pid() != first.pid()
+                && session.player().state() == ToolState.READY), "Player was restarted:\n" + String.join("\n", console));
+        session.holds().hold(HoldReason.SUSPENDED);
+        WorldState frozen = changes.poll(20, TimeUnit.SECONDS);
+        assertTrue(frozen != null && frozen.frozen(), "the new Player's world froze: " + frozen + "\n" + String.join("\n", console));
+        try (StageSimulation sim = new StageSimulation(session.portMap().get(c.defaultPort()))) {
+            StageSimulation.Pose a = sim.pose("r1");
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(1);
+            StageSimulation.Pose b = a;
+            while (System.nanoTime() < end) {
+                b = sim.pose("r1");
+            }
+            assertTrue(b.simTime() - a.simTime() <= ONE_UPDATE_S + 1e-9 && b.distanceTo(a) <= 0.001,
+                    "the new world stands still: " + a + " -> " + b);
+        }
+        session.holds().release(HoldReason.SUSPENDED);
+        WorldState thawed = changes.poll(20, TimeUnit.SECONDS);
+        assertTrue(thawed != null && !thawed.frozen(), "thawed: " + thawed);
+    }
+
     @Test
     void withTheOptionOffTheOtherRobotDrivesOnWhileTheProgramsRobotIsHeld() throws Exception {
         StageSimulation sim = startMoving(config(false, false));
