@@ -28,6 +28,7 @@ import org.stagecraft.streams.Subscription;
 public final class HoldStatus implements AutoCloseable {
     private static final StreamPattern STATE = StreamPattern.exactly(HoldStreams.STATE);
     private static final StreamPattern WORLD = StreamPattern.exactly(HoldStreams.WORLD);
+    private static final String BREAK_PREFIX = "robot data breakpoint: ";
 
     private final Runnable onChange;
     private volatile @Nullable HoldState state;
@@ -93,8 +94,10 @@ public final class HoldStatus implements AutoCloseable {
         }
         HoldState s = state;
         String b = lastBreak;
-        return held + (worldFrozen ? " — world frozen" : "")
-                + (b != null && s != null && s.reasons().containsKey(HoldReason.DATA_BREAKPOINT) ? " — " + b : "");
+        // "; " between the parts: the view's bitmap font has no dash; the reasons already say "robot data breakpoint"
+        return held + (worldFrozen ? "; world frozen" : "")
+                + (b != null && s != null && s.reasons().containsKey(HoldReason.DATA_BREAKPOINT)
+                        ? "; " + (b.startsWith(BREAK_PREFIX) ? b.substring(BREAK_PREFIX.length()) : b) : "");
     }
 
     public static @Nullable String overlayText(@Nullable HoldState s) {

@@ -116,8 +116,8 @@ class LateSubscriberTest {
 
             // a view opened now (late) says all three at once
             try (HoldStatus status = new HoldStatus(bus, () -> { })) {
-                assertEquals("HELD (robot data breakpoint) — world frozen — robot data breakpoint: laser:0 min(ranges) < 0.8 "
-                        + "(laser:0 min(ranges) = 0.78 m)", status.overlayText());
+                assertEquals("HELD (robot data breakpoint); world frozen; laser:0 min(ranges) < 0.8 (laser:0 min(ranges) = 0.78 m)",
+                        status.overlayText());
                 bus.publish(new StreamMessage(HoldStreams.WORLD, 4, new WorldChange(false, 12_300_000, "world runs on")));
                 bus.publish(new StreamMessage(HoldStreams.STATE, 5, new HoldState(true, true, Map.of(HoldReason.SUSPENDED, 1), 0, 1)));
                 assertEquals("HELD (suspended in the debugger)", status.overlayText(),

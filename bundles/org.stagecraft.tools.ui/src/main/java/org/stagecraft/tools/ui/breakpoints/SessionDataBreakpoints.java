@@ -126,7 +126,7 @@ public final class SessionDataBreakpoints implements BreakpointListener, IDebugE
                 + (targets.isEmpty() ? "; the program is not being debugged, so it runs on (Resume Robots in the Tools view releases)"
                         : "; suspending the program"));
         RobotDataBreakpoints.get().hit(hit);
-        status.accept("stopped at " + hit.description());
+        status.accept("stopped: " + hit.why()); // short: the Debug view is narrow; the condition is in the Breakpoints view
         if (targets.isEmpty()) {
             return; // the spy's bound lets the message go on
         }

@@ -174,8 +174,8 @@ public final class SessionParts implements ToolListener {
     }
 
     /**
-     * What the Network Spy's line in the Debug view says beside its name, e.g. "stopped at robot data breakpoint:
-     * laser:0 min(ranges) = 0.287 m < 0.3 m" while a hit holds the program ("" to clear it).
+     * What the Network Spy's line in the Debug view says beside its name, e.g. "stopped: laser:0 min(ranges) =
+     * 0.287 m < 0.3" while a robot data breakpoint's hit holds the program ("" to clear it).
      */
     public void spyStatus(String text) {
         SessionPartProcess p = spy;
