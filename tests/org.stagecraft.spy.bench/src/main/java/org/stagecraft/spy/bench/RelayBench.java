@@ -63,7 +63,7 @@ public final class RelayBench {
 
     public static void main(String[] args) throws Exception {
         Map<String, Integer> opt = new LinkedHashMap<>(Map.of("sessions", 6, "clients", 4, "repeat", 16, "rounds", 2,
-                "pings", 5000, "pace-seconds", 15, "bus", 0));
+                "pings", 5000, "pace-seconds", 15, "bus", 0, "session", 1));
         opt.putAll(Map.of("paced", 1, "full", 1, "others", 1, "paced-warmup", 1));
         for (int i = 0; i + 1 < args.length; i += 2) {
             String k = args[i].replaceFirst("^--", "");
@@ -93,6 +93,9 @@ public final class RelayBench {
             relays.add(new SpyRelay(logDir, SpyServer.Depth.BUS));
         }
         relays.add(new SpyRelay(logDir, SpyServer.Depth.LOG));
+        if (opt.get("session") != 0) {
+            relays.add(new SpyRelay(logDir, SpyServer.Depth.SESSION));
+        }
         Map<Phase, Map<String, List<RunResult>>> results = new LinkedHashMap<>();
         for (int round = 0; round < opt.get("rounds"); round++) {
             for (Phase phase : Phase.values()) {

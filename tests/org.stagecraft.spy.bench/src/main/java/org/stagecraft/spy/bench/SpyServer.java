@@ -28,7 +28,9 @@ import org.stagecraft.streams.StreamPattern;
  */
 public final class SpyServer {
     enum Depth {
-        RELAY("spy relay only"), BUS("spy decode+bus"), LOG("spy decode+bus+log");
+        RELAY("spy relay only"), BUS("spy decode+bus"), LOG("spy decode+bus+log"),
+        /** As every Robot Session runs it: the full spy with holds and robot data breakpoints enabled, nothing held or armed. */
+        SESSION("spy as a Robot Session (+holds, breakpoint gate)");
 
         final String label;
 
@@ -89,12 +91,16 @@ public final class SpyServer {
         bus.subscribe(StreamPattern.any(), DeliveryPolicy.latestValue(), m -> viewed.increment());
         bus.subscribe(StreamPattern.any(), DeliveryPolicy.lossless(1 << 16), m -> consumed.increment());
         LogRecorder recorder = null;
-        if (depth == Depth.LOG) {
+        if (depth == Depth.LOG || depth == Depth.SESSION) {
             log = Files.createTempFile(logDir, "bench-", ".mcap");
             recorder = new LogRecorder(SpyLogWriter.create(log, Map.of("tool", "relay benchmark")));
         }
         pipeline = new ObservationPipeline(bus, new PlayerDecoder(CodecRegistry.standard()), recorder, ObservationPipeline.DEFAULT_MAX_QUEUED_BYTES);
         spy = new NetworkSpy(routes, pipeline);
+        if (depth == Depth.SESSION) { // before start(), as RobotSession does: connections accepted from then on are holdable
+            spy.holds().setEnabled(true);
+            spy.dataBreakpoints().setEnabled(true);
+        }
         spy.start();
         return spy.boundAddresses();
     }
