@@ -533,6 +533,22 @@ class RealStageHoldTest {
             launch.terminate();
             Await.until("the session to end", WAIT, () -> launch.isTerminated() && parts.session().isClosed(), () -> "");
             checkDataBreakpointsInTheLog(runs, Files.readString(scans));
+            // the picture of the inspector at the first triggering message, in the Session Log editor (docs/debugging-robots.md)
+            long triggering = -1;
+            try (SpyLogReader r = SpyLogReader.open(spyLog())) {
+                HoldEntry first = r.holdEntries().stream().filter(e -> e.action() == HoldEntry.Action.BREAK).findFirst().orElseThrow();
+                for (var it = r.entries(); it.hasNext() && triggering < 0;) {
+                    if (it.next() instanceof org.stagecraft.spy.log.LogEntry.Wire w && w.conn() == first.conn()
+                            && w.dir() == org.stagecraft.player.wire.Direction.SERVER_TO_CLIENT && w.streamOffset() == first.programOffset()) {
+                        triggering = w.timeNanos();
+                    }
+                }
+            }
+            assertTrue(triggering > 0, "the triggering message is in the log's wire channel");
+            Path png = reportDir().resolve("screenshots/robot-data-breakpoint-inspector.png");
+            int colours = WorkbenchShot.captureAt(project, triggering, png);
+            assertTrue(colours > 50, "a real picture, not a blank screen: " + colours + " colours in " + png);
+            report("screenshot of the inspector at the triggering message: " + png.toAbsolutePath());
         }
         double[] ms = figures.stream().mapToDouble(f -> f[0]).sorted().toArray();
         report(String.format(Locale.ROOT, "data breakpoint: %d of %d runs suspended at the first scan nearer than 0.8 m; message at the spy "

@@ -196,6 +196,14 @@ final class WorkbenchShot {
 
     /** Opens the views and the log, waits until they have drawn, and saves the shell's picture to {@code png}; returns its colour count. */
     static int capture(IProject project, Path png) throws Exception {
+        return captureAt(project, -1, png);
+    }
+
+    /**
+     * As {@link #capture(IProject, Path)}, with the Session Log editor moved to {@code timeNanos} (the log's clock; -1:
+     * where it opens), so its inspector shows the messages there.
+     */
+    static int captureAt(IProject project, long timeNanos, Path png) throws Exception {
         Display display = Display.getDefault();
         project.refreshLocal(IResource.DEPTH_INFINITE, new NullProgressMonitor());
         Path logs = project.getLocation().toPath().resolve("logs");
@@ -234,6 +242,13 @@ final class WorkbenchShot {
         for (int i = 0; i < 5 && !soft(Duration.ofSeconds(3), holds); i++) {
             display.syncExec(() -> editor.get().reload());
             soft(Duration.ofSeconds(2), () -> ui(() -> editor.get().reading() || !editor.get().timelineComplete()));
+            awaitShown(editor.get());
+        }
+        if (timeNanos >= 0) {
+            display.syncExec(() -> {
+                SessionLogEditor e = editor.get();
+                e.session().transport().seekSeconds((timeNanos - e.log().startNanos()) / 1e9);
+            });
             awaitShown(editor.get());
         }
         awaitDrawn(view.get());
