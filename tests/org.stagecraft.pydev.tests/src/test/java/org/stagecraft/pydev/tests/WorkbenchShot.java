@@ -244,16 +244,31 @@ final class WorkbenchShot {
             soft(Duration.ofSeconds(2), () -> ui(() -> editor.get().reading() || !editor.get().timelineComplete()));
             awaitShown(editor.get());
         }
+        Supplier<Boolean> ready = () -> shown(editor.get());
         if (timeNanos >= 0) {
-            display.syncExec(() -> {
-                SessionLogEditor e = editor.get();
-                e.session().transport().seekSeconds((timeNanos - e.log().startNanos()) / 1e9);
+            // by reflection, as above: the replay session's transport is the editor's own (not this bundle's API); the editor
+            // may read the log once more as its writer closes it, which starts it again from the beginning: seek until it stays
+            Supplier<Boolean> there = () -> ui(() -> {
+                Object replayer = call(editor.get(), "replayer");
+                return replayer != null && Math.abs(((Number) call(replayer, "position")).longValue() - timeNanos) < 1_000_000_000L;
             });
-            awaitShown(editor.get());
+            for (int i = 0; i < 10 && !there.get(); i++) {
+                display.syncExec(() -> {
+                    Object transport = call(call(editor.get(), "session"), "transport");
+                    try {
+                        transport.getClass().getMethod("seek", long.class).invoke(transport, timeNanos);
+                    } catch (ReflectiveOperationException ex) {
+                        throw new AssertionError("seek: " + ex, ex);
+                    }
+                });
+                awaitShown(editor.get());
+            }
+            Await.until("the Session Log editor at the triggering message", WAIT, there::get, () -> "");
+            ready = () -> shown(editor.get()) && there.get(); // the picture only while it is there
         }
         awaitDrawn(view.get());
         // the editor reads a growing log again by itself: the picture is taken when it shows a complete reading
-        return save(png, () -> shown(editor.get()));
+        return save(png, ready);
     }
 
     /** What SessionLogEditorTest waits for: the timeline showing the messages, the inspector's first window (by reflection:
