@@ -152,6 +152,9 @@ class Client:
         except ConnectionRefusedError:
             raise PlayerConnectionError(f"cannot connect to {self.where}: connection refused "
                                         f"(is Player running and listening on port {self.port}?)") from None
+        except ConnectionResetError:
+            # accepted, then reset before connect() returned: the same as a reset before the banner
+            raise self._ended_before_banner("reset") from None
         except socket.timeout:
             raise PlayerTimeout(f"cannot connect to {self.where}: no answer within {self.timeout} s") from None
         except OSError as e:
@@ -171,10 +174,13 @@ class Client:
             # Network Spy on this port it is what a client sees when Player behind the spy is not
             # running, so say what happened and where to look instead of guessing.
             how = "reset" if isinstance(e.__context__, ConnectionResetError) else "closed"
-            raise ConnectionLost(f"{self.where}: the connection was {how} before Player's banner arrived; if it "
-                                 f"goes through Stagecraft's Network Spy, Player may not be running behind it "
-                                 f"(check the spy's messages)") from None
+            raise self._ended_before_banner(how) from None
         return self._framer.ident
+
+    def _ended_before_banner(self, how: str) -> ConnectionLost:
+        return ConnectionLost(f"{self.where}: the connection was {how} before Player's banner arrived; if it "
+                              f"goes through Stagecraft's Network Spy, Player may not be running behind it "
+                              f"(check the spy's messages)")
 
     @property
     def server_version(self) -> str:
