@@ -26,40 +26,42 @@ public final class HoldMarks {
     private final List<Long> breaks = new ArrayList<>();
     private final Set<Long> breakMessages = new HashSet<>();
 
+    /** Pairs starts with ends into spans: a second start before an end is ignored, an open span runs to the log's end. */
+    private static final class Spans {
+        private final List<Span> done = new ArrayList<>();
+        private long start = Long.MIN_VALUE;
+        private String text = "";
+
+        void start(HoldEntry e) {
+            if (start == Long.MIN_VALUE) {
+                start = e.timeNanos();
+                text = e.text();
+            }
+        }
+
+        void end(long t) {
+            if (start != Long.MIN_VALUE) {
+                done.add(new Span(start, Math.max(start, t), text));
+                start = Long.MIN_VALUE;
+            }
+        }
+
+        List<Span> finish(long endNanos) {
+            end(endNanos); // the log ended while it was on
+            return List.copyOf(done);
+        }
+    }
+
     /** @param endNanos where a hold still on at the end of the log is drawn to */
     public HoldMarks(List<HoldEntry> entries, long endNanos) {
-        List<Span> out = new ArrayList<>();
-        List<Span> frozenOut = new ArrayList<>();
-        long on = Long.MIN_VALUE;
-        String why = "";
-        long frozenAt = Long.MIN_VALUE;
-        String frozenText = "";
+        Spans held = new Spans();
+        Spans frozenWorld = new Spans();
         for (HoldEntry e : entries) {
             switch (e.action()) {
-                case WORLD_FROZEN -> {
-                    if (frozenAt == Long.MIN_VALUE) {
-                        frozenAt = e.timeNanos();
-                        frozenText = e.text();
-                    }
-                }
-                case WORLD_THAWED -> {
-                    if (frozenAt != Long.MIN_VALUE) {
-                        frozenOut.add(new Span(frozenAt, e.timeNanos(), frozenText));
-                        frozenAt = Long.MIN_VALUE;
-                    }
-                }
-                case HOLD_ON -> {
-                    if (on == Long.MIN_VALUE) {
-                        on = e.timeNanos();
-                        why = e.text();
-                    }
-                }
-                case HOLD_OFF -> {
-                    if (on != Long.MIN_VALUE) {
-                        out.add(new Span(on, e.timeNanos(), why));
-                        on = Long.MIN_VALUE;
-                    }
-                }
+                case WORLD_FROZEN -> frozenWorld.start(e);
+                case WORLD_THAWED -> frozenWorld.end(e.timeNanos());
+                case HOLD_ON -> held.start(e);
+                case HOLD_OFF -> held.end(e.timeNanos());
                 case INJECTED -> injected.add(e.timeNanos());
                 case BREAK -> {
                     breaks.add(e.timeNanos());
@@ -74,14 +76,8 @@ public final class HoldMarks {
                 }
             }
         }
-        if (on != Long.MIN_VALUE) {
-            out.add(new Span(on, Math.max(on, endNanos), why)); // the log ended while held
-        }
-        spans = List.copyOf(out);
-        if (frozenAt != Long.MIN_VALUE) {
-            frozenOut.add(new Span(frozenAt, Math.max(frozenAt, endNanos), frozenText));
-        }
-        frozen = List.copyOf(frozenOut);
+        spans = held.finish(endNanos);
+        frozen = frozenWorld.finish(endNanos);
     }
 
     public static HoldMarks none() {

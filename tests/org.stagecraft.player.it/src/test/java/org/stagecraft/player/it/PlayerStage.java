@@ -161,6 +161,13 @@ final class PlayerStage {
     }
 
     /** Polls until {@code condition} holds or {@code within} passes. */
+    /** A private Xvfb on {@code display} as a session's user tool, ready when it prints its display number. */
+    static org.stagecraft.tools.process.ToolSpec xvfb(int display) {
+        return org.stagecraft.tools.process.ToolSpec.of("Xvfb", List.of("Xvfb", ":" + display, "-screen", "0", "640x480x24",
+                "-nolisten", "tcp", "-displayfd", "1")).withReadiness(
+                        org.stagecraft.tools.process.Readiness.line("^" + display + "$"), Duration.ofSeconds(30));
+    }
+
     static boolean await(Duration within, java.util.function.BooleanSupplier condition) throws InterruptedException {
         long end = System.nanoTime() + within.toNanos();
         while (System.nanoTime() < end) {

@@ -58,21 +58,11 @@ class RealPlayerSessionTest {
     Path tmp;
 
     /** Everything the session's tools said (Player's console), as the launch's consoles show it. */
-    private final List<String> console = new CopyOnWriteArrayList<>();
+    private final SessionConsole listener = new SessionConsole();
+    private final List<String> console = listener.lines;
     private final List<PlayerStage.Program> programs = new ArrayList<>();
     private RobotSession session;
 
-    private final ToolListener listener = new ToolListener() {
-        @Override
-        public void output(SupervisedTool tool, Stream stream, String line) {
-            console.add((tool == null ? "session" : tool.name()) + "|" + stream + "|" + line); // null: the session itself
-        }
-
-        @Override
-        public void stateChanged(SupervisedTool tool, ToolState from, ToolState to, String detail) {
-            console.add(tool.name() + "|STATE|" + from + "->" + to + " " + detail);
-        }
-    };
 
     @AfterEach
     void stopEverything() throws Exception {
@@ -258,8 +248,7 @@ class RealPlayerSessionTest {
     void laserSentinelTurnsOnTheSpotToTheNearestReturnAndStops() throws Exception {
         int port = PlayerStage.freePorts(1).get(0);
         int display = PlayerStage.freeDisplay();
-        ToolSpec xvfb = ToolSpec.of("Xvfb", List.of("Xvfb", ":" + display, "-screen", "0", "640x480x24", "-nolisten", "tcp",
-                "-displayfd", "1")).withReadiness(Readiness.line("^" + display + "$"), Duration.ofSeconds(30));
+        ToolSpec xvfb = PlayerStage.xvfb(display);
         Map<String, String> env = new HashMap<>(PlayerStage.env());
         env.put("DISPLAY", ":" + display);
         SessionConfig withWindow = config(PlayerStage.worlds().resolve("pioneer-laser-sonar.cfg"), port).withTools(List.of(xvfb));

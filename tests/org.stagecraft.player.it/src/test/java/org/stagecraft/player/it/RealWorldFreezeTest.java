@@ -51,21 +51,10 @@ class RealWorldFreezeTest {
     @TempDir
     Path tmp;
 
-    private final List<String> console = new CopyOnWriteArrayList<>();
+    private final SessionConsole listener = new SessionConsole();
     private final List<PlayerStage.Program> programs = new ArrayList<>();
     private RobotSession session;
 
-    private final ToolListener listener = new ToolListener() {
-        @Override
-        public void output(SupervisedTool tool, Stream stream, String line) {
-            console.add((tool == null ? "session" : tool.name()) + "|" + line);
-        }
-
-        @Override
-        public void stateChanged(SupervisedTool tool, ToolState from, ToolState to, String detail) {
-            console.add(tool.name() + "|" + from + "->" + to + " " + detail);
-        }
-    };
 
     @AfterEach
     void stopEverything() throws Exception {
@@ -83,8 +72,7 @@ class RealWorldFreezeTest {
         List<ToolSpec> tools = List.of();
         if (window) {
             int display = PlayerStage.freeDisplay();
-            tools = List.of(ToolSpec.of("Xvfb", List.of("Xvfb", ":" + display, "-screen", "0", "640x480x24", "-nolisten", "tcp",
-                    "-displayfd", "1")).withReadiness(Readiness.line("^" + display + "$"), Duration.ofSeconds(30)));
+            tools = List.of(PlayerStage.xvfb(display));
             env.put("DISPLAY", ":" + display);
         }
         Path cfg = PlayerStage.worlds().resolve(window ? "two-robots.cfg" : "two-robots-headless.cfg");
@@ -107,7 +95,7 @@ class RealWorldFreezeTest {
         StageSimulation.Pose r0 = sim.pose("r0");
         StageSimulation.Pose r1 = sim.pose("r1");
         assertTrue(PlayerStage.await(WAIT, () -> moved(sim, "r0", r0) && moved(sim, "r1", r1)),
-                "both robots move before the hold:\n" + drive.output() + "\n" + String.join("\n", console));
+                "both robots move before the hold:\n" + drive.output() + "\n" + listener);
         return sim;
     }
 
@@ -132,7 +120,7 @@ class RealWorldFreezeTest {
     private void theWorldStandsStillWhileHeldAndRunsOnAfter(boolean window) throws Exception {
         StageSimulation sim = startMoving(config(window, true));
         WorldFreeze world = session.world();
-        assertTrue(world != null, "the session freezes its world: " + session.worldProblem() + "\n" + String.join("\n", console));
+        assertTrue(world != null, "the session freezes its world: " + session.worldProblem() + "\n" + listener);
         LinkedBlockingQueue<WorldState> changes = new LinkedBlockingQueue<>();
         world.addListener((s, problem) -> changes.add(s));
 
@@ -209,10 +197,10 @@ class RealWorldFreezeTest {
         ProcessHandle first = session.player().process();
         first.destroyForcibly();
         assertTrue(PlayerStage.await(WAIT, () -> session.player().process() != null && session.player().process().pid() != first.pid()
-                && session.player().state() == ToolState.READY), "Player was restarted:\n" + String.join("\n", console));
+                && session.player().state() == ToolState.READY), "Player was restarted:\n" + listener);
         session.holds().hold(HoldReason.SUSPENDED);
         WorldState frozen = changes.poll(20, TimeUnit.SECONDS);
-        assertTrue(frozen != null && frozen.frozen(), "the new Player's world froze: " + frozen + "\n" + String.join("\n", console));
+        assertTrue(frozen != null && frozen.frozen(), "the new Player's world froze: " + frozen + "\n" + listener);
         try (StageSimulation sim = new StageSimulation(session.portMap().get(c.defaultPort()))) {
             StageSimulation.Pose a = sim.pose("r1");
             long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(1);
