@@ -1,9 +1,14 @@
 package org.stagecraft.scene;
 
+import java.util.Arrays;
 import java.util.EnumMap;
 import java.util.stream.Collectors;
 
 import org.eclipse.jdt.annotation.Nullable;
+import org.stagecraft.player.codec.CodecRegistry;
+import org.stagecraft.player.codec.DecodedMessage;
+import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.spy.hold.HoldAction;
 import org.stagecraft.spy.hold.HoldReason;
 import org.stagecraft.spy.hold.HoldState;
@@ -20,7 +25,7 @@ import org.stagecraft.streams.Subscription;
  * the {@link HoldStreams#STATE} stream, starting from the last state the bus carried (a view opened while
  * the program is suspended shows "HELD" at once), whether the session froze its simulated world
  * ({@link HoldStreams#WORLD}), and the robot data breakpoint that stopped it, with the values it read
- * ({@link HoldStreams#breaks()}).
+ * ({@link HoldStreams#breaks()}) and the reading itself, decoded, for the view to mark ({@link #breakReading()}).
  *
  * <p>One state per bus: every session's spy publishes on the same key, so with two sessions on the
  * workbench bus the newest change wins.
@@ -34,6 +39,8 @@ public final class HoldStatus implements AutoCloseable {
     private volatile @Nullable HoldState state;
     private volatile boolean worldFrozen;
     private volatile @Nullable String lastBreak;
+    private volatile @Nullable BreakReading lastReading;
+    private final PlayerDecoder decoder = new PlayerDecoder(CodecRegistry.standard());
     private final Subscription subscription;
     private final Subscription world;
     private final Subscription breaks;
@@ -66,6 +73,7 @@ public final class HoldStatus implements AutoCloseable {
     private void acceptBreak(StreamMessage m) {
         if (m.payload() instanceof HoldAction a) {
             lastBreak = a.text();
+            lastReading = readingOf(a);
         }
     }
 
@@ -79,6 +87,25 @@ public final class HoldStatus implements AutoCloseable {
 
     private static @Nullable HoldState stateOf(StreamMessage m) {
         return m.payload() instanceof HoldState s ? s : null;
+    }
+
+    private @Nullable BreakReading readingOf(HoldAction a) {
+        byte[] bytes = a.bytes();
+        if (bytes.length < MessageHeader.SIZE) {
+            return null;
+        }
+        DecodedMessage d = decoder.decode(a.header(), Arrays.copyOfRange(bytes, MessageHeader.SIZE, bytes.length));
+        return d.hasProblem() ? null
+                : new BreakReading(DeviceAddress.of(HoldStreams.actionKey(a)), d.body(), a.decidingFields());
+    }
+
+    /**
+     * The reading the robot data breakpoint stopped on, while the robots are held for it; null otherwise
+     * (nothing held, held for another reason only, or a message that did not decode).
+     */
+    public @Nullable BreakReading breakReading() {
+        HoldState s = state;
+        return s != null && s.held() && s.reasons().containsKey(HoldReason.DATA_BREAKPOINT) ? lastReading : null;
     }
 
     /** The newest state seen, or null if none. */

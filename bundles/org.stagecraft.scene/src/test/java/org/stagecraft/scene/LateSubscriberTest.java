@@ -109,8 +109,11 @@ class LateSubscriberTest {
             org.stagecraft.spy.proxy.ConnectionInfo c = new org.stagecraft.spy.proxy.ConnectionInfo(1, 6665, "127.0.0.1:40000",
                     "127.0.0.1:6665", "127.0.0.1:7665");
             org.stagecraft.player.wire.MessageHeader h = new org.stagecraft.player.wire.MessageHeader(0, 6665, 6, 0, 1, 1, 12.3, 7, 0);
-            HoldAction hit = new HoldAction(c, org.stagecraft.spy.log.HoldEntry.Action.BREAK, 480, 480, h, new byte[40],
-                    "robot data breakpoint: laser:0 min(ranges) < 0.8 (laser:0 min(ranges) = 0.78 m)");
+            org.stagecraft.player.msg.Laser.Scan scan = new org.stagecraft.player.msg.Laser.Scan(-1.5f, 1.5f, 1.5f, 8f, 3,
+                    org.stagecraft.player.msg.FloatArray.of(2f, 0.78f, 3f), 0, org.stagecraft.player.msg.ByteArray.EMPTY, 0);
+            HoldAction hit = new HoldAction(c, org.stagecraft.spy.log.HoldEntry.Action.BREAK, 480, 480, h,
+                    org.stagecraft.player.codec.PlayerEncoder.encode(h, scan),
+                    "robot data breakpoint: laser:0 min(ranges) < 0.8 (laser:0 min(ranges) = 0.78 m)", List.of("ranges[1]"));
             bus.publish(new StreamMessage(HoldStreams.actionKey(hit), 2, hit));
             bus.publish(new StreamMessage(HoldStreams.WORLD, 3, new WorldChange(true, 12_300_000, "world frozen")));
 
@@ -118,10 +121,14 @@ class LateSubscriberTest {
             try (HoldStatus status = new HoldStatus(bus, () -> { })) {
                 assertEquals("HELD (robot data breakpoint); world frozen; laser:0 min(ranges) < 0.8 (laser:0 min(ranges) = 0.78 m)",
                         status.overlayText());
+                BreakReading reading = status.breakReading();
+                assertEquals(new BreakReading(new DeviceAddress(new RobotId("127.0.0.1:6665"), 6, 0), scan, List.of("ranges[1]")),
+                        reading, "the reading to mark: the laser's message, decoded, and its deciding beam");
                 bus.publish(new StreamMessage(HoldStreams.WORLD, 4, new WorldChange(false, 12_300_000, "world runs on")));
                 bus.publish(new StreamMessage(HoldStreams.STATE, 5, new HoldState(true, true, Map.of(HoldReason.SUSPENDED, 1), 0, 1)));
                 assertEquals("HELD (suspended in the debugger)", status.overlayText(),
                         "the breakpoint's reading is said only while it holds; the world runs again");
+                assertNull(status.breakReading(), "and marked only while it holds");
             }
         }
     }

@@ -7,6 +7,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.ToIntFunction;
 
 import org.eclipse.jdt.annotation.Nullable;
+import org.stagecraft.scene.BreakReading;
 import org.stagecraft.scene.Camera;
 import org.stagecraft.scene.LayerFeed;
 import org.stagecraft.scene.LayerSpec;
@@ -15,6 +16,7 @@ import org.stagecraft.scene.SceneFeed;
 import org.stagecraft.scene.WorldModel;
 import org.stagecraft.scene.shapes.FloatList;
 import org.stagecraft.scene.shapes.GridShape;
+import org.stagecraft.scene.shapes.ReadingMark;
 import org.stagecraft.streams.StreamBus;
 
 import com.jogamp.opengl.GL;
@@ -48,6 +50,11 @@ public final class RobotScene implements AutoCloseable {
     private final Map<String, Long> drawnVersions = new ConcurrentHashMap<>();
     /** Text drawn over everything (e.g. "HELD (suspended in the debugger)"), or null. */
     private volatile @Nullable String overlay;
+    /** The reading a robot data breakpoint stopped on, marked over the layers, or null. */
+    private volatile @Nullable BreakReading mark;
+    private final FloatList markLines = new FloatList(), markPoints = new FloatList();
+    /** The mark's colour (0xFFD400) and its edge's. */
+    public static final float[] MARK = { 1f, 212 / 255f, 0f }, MARK_EDGE = { 0f, 0f, 0f };
 
     /** @param onChange told (on bus threads) whenever new data arrived: the view schedules a redraw */
     public RobotScene(WorldModel world, Camera camera, Runnable onChange) {
@@ -166,6 +173,15 @@ public final class RobotScene implements AutoCloseable {
         return overlay;
     }
 
+    /** Marks the reading a robot data breakpoint stopped on ({@link ReadingMark}), or nothing (null). */
+    public void mark(@Nullable BreakReading reading) {
+        mark = reading;
+    }
+
+    public @Nullable BreakReading mark() {
+        return mark;
+    }
+
     public void showGrid(boolean show) {
         grid = show;
     }
@@ -222,6 +238,7 @@ public final class RobotScene implements AutoCloseable {
             r.frame(gl, new RenderInput(l, f.snapshot(), f.drainUnseen(), version, world, camera));
             drawnVersions.put(l.id(), version);
         }
+        drawMark(gl);
         drawOverlay(gl, width, height);
         frames++;
     }
@@ -248,6 +265,39 @@ public final class RobotScene implements AutoCloseable {
             gl.glWindowPos2d(3, camera.worldToWindowY(y) + 3);
             glut.glutBitmapString(GLUT.BITMAP_HELVETICA_10, label(y));
         }
+    }
+
+    /** The mark, yellow on a black edge: it reads over every layer's colour (the robots are red, the laser blue). */
+    private void drawMark(GL2 gl) {
+        BreakReading reading = mark;
+        if (reading == null) {
+            return;
+        }
+        markLines.clear();
+        markPoints.clear();
+        ReadingMark.build(reading, world, camera.metresPerPixel(), markLines, markPoints);
+        markPass(gl, MARK_EDGE, 6, 12);
+        markPass(gl, MARK, 3, 8);
+        gl.glLineWidth(1);
+        gl.glPointSize(1);
+    }
+
+    private void markPass(GL2 gl, float[] rgb, float lineWidth, float pointSize) {
+        gl.glColor4f(rgb[0], rgb[1], rgb[2], 1);
+        gl.glLineWidth(lineWidth);
+        gl.glBegin(GL.GL_LINES);
+        float[] a = markLines.array();
+        for (int i = 0; i < markLines.size(); i += 2) {
+            gl.glVertex2f(a[i], a[i + 1]);
+        }
+        gl.glEnd();
+        gl.glPointSize(pointSize);
+        gl.glBegin(GL.GL_POINTS);
+        float[] p = markPoints.array();
+        for (int i = 0; i < markPoints.size(); i += 2) {
+            gl.glVertex2f(p[i], p[i + 1]);
+        }
+        gl.glEnd();
     }
 
     /**

@@ -27,6 +27,7 @@ import org.eclipse.ui.PartInitException;
 import org.eclipse.ui.part.ViewPart;
 import org.stagecraft.core.streams.BusSources;
 import org.stagecraft.core.streams.WorkbenchBus;
+import org.stagecraft.scene.BreakReading;
 import org.stagecraft.scene.Camera;
 import org.stagecraft.scene.DefaultLayers;
 import org.stagecraft.scene.HoldStatus;
@@ -180,6 +181,11 @@ public class RobotView extends ViewPart {
         return holdStatus == null ? null : holdStatus.overlayText();
     }
 
+    /** The reading a robot data breakpoint stopped on, which the view marks, or null (for tests). */
+    public @Nullable BreakReading breakReading() {
+        return holdStatus == null ? null : holdStatus.breakReading();
+    }
+
     private void describeSource() {
         if (BusSources.LIVE.equals(sourceId)) {
             setContentDescription("");
@@ -306,6 +312,7 @@ public class RobotView extends ViewPart {
             GL2 gl = d.getGL().getGL2();
             int w = d.getSurfaceWidth(), h = d.getSurfaceHeight();
             scene.overlay(holdText());
+            scene.mark(breakReading());
             scene.render(gl, w, h);
             Consumer<FramePixels> r = readback;
             if (r != null) {

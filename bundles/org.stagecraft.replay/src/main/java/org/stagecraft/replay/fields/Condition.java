@@ -28,8 +28,15 @@ import org.stagecraft.player.codec.MessageBody;
  */
 public final class Condition {
 
-    /** The outcome of a test, with why for people: {@code "min(ranges) = 0.287 m < 0.3 m"}. */
-    public record Verdict(boolean holds, String explanation) {
+    /**
+     * The outcome of a test, with why for people ({@code "min(ranges) = 0.287 m < 0.3 m"}) and the concrete
+     * fields that decided it when it holds ({@link FieldPath#decidingFields}: {@code ranges[147]}; for
+     * {@code any(bumpers)} the pressed {@code bumpers[i]}), for a view to mark.
+     */
+    public record Verdict(boolean holds, String explanation, List<String> decidingFields) {
+        public Verdict {
+            decidingFields = List.copyOf(decidingFields);
+        }
     }
 
     private final String text;
@@ -59,7 +66,12 @@ public final class Condition {
     public Verdict test(Field root) {
         Eval e = new Eval(root);
         boolean holds = e.truth(this.root);
-        return new Verdict(holds, holds ? e.explain(this.root) : "");
+        if (!holds) {
+            return new Verdict(false, "", List.of());
+        }
+        List<String> deciding = new ArrayList<>();
+        e.deciding(this.root, deciding);
+        return new Verdict(true, e.explain(this.root), deciding.stream().distinct().toList());
     }
 
     @Override
@@ -222,6 +234,32 @@ public final class Condition {
                 case AnyAll a -> a.written() + " (" + countNonZero(a) + " of " + a.path().numbers(root).length + " non-zero)";
                 default -> written(n);
             };
+        }
+
+        /** The fields the comparisons that {@link #explain} names read (see {@link Verdict#decidingFields}). */
+        void deciding(Node n, List<String> out) {
+            switch (n) {
+                case Compare c -> {
+                    deciding(c.left(), out);
+                    deciding(c.right(), out);
+                }
+                case Logic l when l.and() -> {
+                    deciding(l.left(), out);
+                    deciding(l.right(), out);
+                }
+                case Logic l -> deciding(truth(l.left()) ? l.left() : l.right(), out);
+                case AnyAll a -> out.addAll(a.all() ? a.path().decidingFields(root) : a.path().nonZeroFields(root));
+                case Path p -> out.addAll(p.path().decidingFields(root));
+                case Abs a -> deciding(a.of(), out);
+                case Negate m -> deciding(m.of(), out);
+                case Arith a -> {
+                    deciding(a.left(), out);
+                    deciding(a.right(), out);
+                }
+                default -> {
+                    // literals, true/false and "not" decide through no field of the message
+                }
+            }
         }
 
         private int countNonZero(AnyAll a) {

@@ -8,6 +8,7 @@ import java.util.OptionalDouble;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.MessageBody;
 
 /**
@@ -159,8 +160,19 @@ public final class FieldPath {
     }
 
     private void resolve(Field at, int step, List<Field> out) {
+        resolve(at, step, out, null, "");
+    }
+
+    /**
+     * Collects the fields the path reaches; with {@code names} also each one's concrete path
+     * ({@code poses[2].px}), built only then: plots evaluate paths on every message and need no names.
+     */
+    private void resolve(Field at, int step, List<Field> out, @Nullable List<String> names, String path) {
         if (step == steps.size()) {
             out.add(at);
+            if (names != null) {
+                names.add(path);
+            }
             return;
         }
         if (at.kind() != Field.Kind.STRUCT) {
@@ -169,25 +181,84 @@ public final class FieldPath {
         Step s = steps.get(step);
         Field f = at.member(s.name());
         if (f != null) {
-            index(f, s.indexes(), 0, step, out);
+            index(f, s.indexes(), 0, step, out, names, names == null ? "" : path.isEmpty() ? s.name() : path + "." + s.name());
         }
     }
 
-    private void index(Field f, int[] indexes, int i, int step, List<Field> out) {
+    private void index(Field f, int[] indexes, int i, int step, List<Field> out, @Nullable List<String> names, String path) {
         if (i == indexes.length) {
-            resolve(f, step + 1, out);
+            resolve(f, step + 1, out, names, path);
             return;
         }
         if (f.kind() != Field.Kind.LIST) {
             return;
         }
         if (indexes[i] == ANY) {
-            for (Field c : f.children()) {
-                index(c, indexes, i + 1, step, out);
+            for (int k = 0; k < f.children().size(); k++) {
+                index(f.children().get(k), indexes, i + 1, step, out, names, names == null ? "" : path + "[" + k + "]");
             }
         } else if (indexes[i] < f.children().size()) {
-            index(f.children().get(indexes[i]), indexes, i + 1, step, out);
+            index(f.children().get(indexes[i]), indexes, i + 1, step, out, names, names == null ? "" : path + "[" + indexes[i] + "]");
         }
+    }
+
+    /**
+     * The concrete fields that give this path its value in {@code root}, as paths — what a view marks when
+     * a test on the path held (as Wireshark highlights the fields a display filter matched):
+     * {@code ranges[3]} for itself; for {@code min(ranges)} and {@code max(ranges)} the element holding the
+     * extreme ({@code ranges[147]}, the first of equals); for {@code mean}, {@code sum} and {@code count}
+     * every field they read ({@code ranges}: the whole list). Empty when the body has no such field.
+     */
+    public List<String> decidingFields(Field root) {
+        List<Field> found = new ArrayList<>();
+        List<String> names = new ArrayList<>();
+        resolve(root, 0, found, names, "");
+        if (aggregate != Aggregate.MIN && aggregate != Aggregate.MAX) {
+            return List.copyOf(names);
+        }
+        String best = null;
+        double bestValue = Double.NaN;
+        for (int k = 0; k < found.size(); k++) {
+            Field f = found.get(k);
+            List<Field> elements = f.kind() == Field.Kind.LIST ? f.children() : List.of(f);
+            for (int e = 0; e < elements.size(); e++) {
+                Field x = elements.get(e);
+                if (!x.kind().numeric()) {
+                    continue;
+                }
+                double v = x.number();
+                if (best == null || (aggregate == Aggregate.MIN ? v < bestValue : v > bestValue)) {
+                    best = f.kind() == Field.Kind.LIST ? names.get(k) + "[" + e + "]" : names.get(k);
+                    bestValue = v;
+                }
+            }
+        }
+        return best == null ? List.of() : List.of(best);
+    }
+
+    /**
+     * The elements of the path's list(s) whose number is non-zero, as paths ({@code bumpers[1]}): what
+     * {@code any(bumpers)} found.
+     */
+    public List<String> nonZeroFields(Field root) {
+        List<Field> found = new ArrayList<>();
+        List<String> names = new ArrayList<>();
+        resolve(root, 0, found, names, "");
+        List<String> out = new ArrayList<>();
+        for (int k = 0; k < found.size(); k++) {
+            Field f = found.get(k);
+            if (f.kind() == Field.Kind.LIST) {
+                for (int e = 0; e < f.children().size(); e++) {
+                    Field x = f.children().get(e);
+                    if (x.kind().numeric() && x.number() != 0) {
+                        out.add(names.get(k) + "[" + e + "]");
+                    }
+                }
+            } else if (f.kind().numeric() && f.number() != 0) {
+                out.add(names.get(k));
+            }
+        }
+        return out;
     }
 
     /**

@@ -129,7 +129,7 @@ public final class StreamCondition implements MessageCondition {
     }
 
     @Override
-    public @Nullable String test(MessageHeader header, byte[] payload) {
+    public @Nullable Satisfied test(MessageHeader header, byte[] payload) {
         DecodedMessage m = decoder.decode(header, payload);
         if (m.hasProblem()) {
             return null; // a message that does not decode has no fields to test
@@ -140,7 +140,7 @@ public final class StreamCondition implements MessageCondition {
         }
         String name = decoder.registry().interfaceName(header.interf());
         String dev = (name == null ? "interface " + header.interf() : name.toLowerCase(Locale.ROOT)) + ":" + header.index();
-        return dev + " " + v.explanation();
+        return new Satisfied(dev + " " + v.explanation(), v.decidingFields());
     }
 
     @Override

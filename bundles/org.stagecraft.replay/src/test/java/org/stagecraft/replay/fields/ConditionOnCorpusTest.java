@@ -26,6 +26,7 @@ import org.stagecraft.replay.log.LogCursor;
 import org.stagecraft.replay.log.LogMessage;
 import org.stagecraft.replay.log.SessionLog;
 import org.stagecraft.replay.log.SessionLogs;
+import org.stagecraft.spy.breakpoint.MessageCondition;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
@@ -69,6 +70,15 @@ class ConditionOnCorpusTest {
         return m;
     }
 
+    private static int firstIndexOf(float[] a, float v) {
+        for (int i = 0; i < a.length; i++) {
+            if (a[i] == v) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
     private static float max(float[] a) {
         float m = Float.NEGATIVE_INFINITY;
         for (float f : a) {
@@ -107,8 +117,15 @@ class ConditionOnCorpusTest {
                 MessageBody body = m.decoded() == null ? null : m.decoded().body();
                 for (int i = 0; i < cases.size(); i++) {
                     StreamCondition c = conditions.get(i);
-                    if (c.watches(m.connection(), h) && c.test(h, payload) != null) {
+                    MessageCondition.Satisfied hit = c.watches(m.connection(), h) ? c.test(h, payload) : null;
+                    if (hit != null) {
                         hits[i][0]++;
+                        if (body instanceof Laser.Scan scan && c.text().contains("min(ranges)")) {
+                            // the beam a view marks is the nearest return, found by hand here
+                            float[] r = scan.ranges().toArray();
+                            assertEquals(List.of("ranges[" + firstIndexOf(r, min(r)) + "]"), hit.decidingFields(),
+                                    trace.getFileName() + ": " + c.text());
+                        }
                     }
                     if (body != null && c.watches(m.connection(), h) && cases.get(i).byHand().test(body)) {
                         hits[i][1]++;

@@ -76,6 +76,26 @@ class ConditionTest {
         assertEquals("", Condition.parse("min(ranges) < 0.1").test(NEAR).explanation(), "nothing to explain when it does not hold");
     }
 
+    /** What a view marks when a breakpoint stops: the concrete fields that decided the test, not the test's text. */
+    @ParameterizedTest
+    @CsvSource(delimiter = ';', value = {
+            "min(ranges) < 0.3; NEAR; ranges[1]",
+            "max(ranges) >= 3; FAR; ranges[1]",
+            "ranges[2] > 1; NEAR; ranges[2]",
+            "any(bumpers); NEAR; bumpers[1]",
+            "all(bumpers) or stall == 1; FAR; stall",
+            "stall == 1 or min(ranges) < 0.3; NEAR; ranges[1]",
+            "min(ranges) < 0.3 and pos.px > 1; NEAR; ranges[1] pos.px",
+            "abs(vel.pa - 0.1) > 0.5; NEAR; vel.pa",
+            "count(ranges) == 3; NEAR; ranges",
+            "not (stall == 1); NEAR; ''" })
+    void namesTheFieldsThatDecidedIt(String text, String which, String fields) {
+        Condition.Verdict v = Condition.parse(text).test(which.equals("NEAR") ? NEAR : FAR);
+        assertTrue(v.holds(), text);
+        assertEquals(fields.isEmpty() ? List.of() : List.of(fields.split(" ")), v.decidingFields(), text);
+        assertEquals(List.of(), Condition.parse("min(ranges) < 0.1").test(NEAR).decidingFields(), "none when it does not hold");
+    }
+
     /** A unit converts the number: 30 deg is 0.5236 rad, 0.3 m/s stays 0.3. */
     @Test
     void unitsConvertToPlayersSiUnits() {

@@ -1,5 +1,6 @@
 package org.stagecraft.spy.breakpoint;
 
+import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
@@ -20,6 +21,7 @@ public final class BreakpointHit {
     private final MessageHeader header;
     private final byte[] message;
     private final String why;
+    private final List<String> decidingFields;
     private final long timeNanos;
     private final long foundNanos;
     private final boolean disabledByHitCount;
@@ -28,13 +30,14 @@ public final class BreakpointHit {
     private volatile long passedOnNanos;
 
     BreakpointHit(DataBreakpoint breakpoint, ConnectionInfo connection, long offset, MessageHeader header, byte[] message,
-            String why, long timeNanos, long foundNanos, boolean disabledByHitCount) {
+            String why, List<String> decidingFields, long timeNanos, long foundNanos, boolean disabledByHitCount) {
         this.breakpoint = breakpoint;
         this.connection = connection;
         this.offset = offset;
         this.header = header;
         this.message = message;
         this.why = why;
+        this.decidingFields = List.copyOf(decidingFields);
         this.timeNanos = timeNanos;
         this.foundNanos = foundNanos;
         this.disabledByHitCount = disabledByHitCount;
@@ -65,6 +68,11 @@ public final class BreakpointHit {
     /** Why it stopped, for the Debug view and the console: the condition's values, e.g. "min(ranges) = 0.287 m < 0.3 m". */
     public String why() {
         return why;
+    }
+
+    /** The triggering message's fields that decided it, as paths ({@code ranges[147]}): what the Robot View marks. */
+    public List<String> decidingFields() {
+        return decidingFields;
     }
 
     /** "robot data breakpoint: laser:0 min(ranges) = 0.287 m < 0.3 m" */

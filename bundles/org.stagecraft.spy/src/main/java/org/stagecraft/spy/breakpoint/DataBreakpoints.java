@@ -202,7 +202,7 @@ public final class DataBreakpoints implements AutoCloseable {
         }
         byte[] payload = java.util.Arrays.copyOfRange(message, MessageHeader.SIZE, message.length);
         for (DataBreakpoint b : candidates) {
-            String why;
+            MessageCondition.Satisfied why;
             try {
                 why = b.condition().test(h, payload);
             } catch (RuntimeException e) {
@@ -230,12 +230,14 @@ public final class DataBreakpoints implements AutoCloseable {
                 if (disable) {
                     breakpoints.set(breakpoints.indexOf(b), new DataBreakpoint(b.id(), b.condition(), false, b.hitCount()));
                 }
-                hit = new BreakpointHit(b, c, offset, h, message, why, WallClock.nowNanos(), System.nanoTime(), disable);
+                hit = new BreakpointHit(b, c, offset, h, message, why.why(), why.decidingFields(), WallClock.nowNanos(),
+                        System.nanoTime(), disable);
                 open = hit;
                 rearm();
             }
             // the hit first, then what it did: the log reads BREAK, then the hold's zero commands
-            report(new HoldAction(c, HoldEntry.Action.BREAK, offset, offset, h, message, hit.description()));
+            report(new HoldAction(c, HoldEntry.Action.BREAK, offset, offset, h, message, hit.description(),
+                    hit.decidingFields()));
             holds.hold(HoldReason.DATA_BREAKPOINT);
             for (BreakpointListener l : listeners) {
                 try {

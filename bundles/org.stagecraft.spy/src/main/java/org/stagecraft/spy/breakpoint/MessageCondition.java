@@ -1,5 +1,7 @@
 package org.stagecraft.spy.breakpoint;
 
+import java.util.List;
+
 import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.spy.proxy.ConnectionInfo;
@@ -10,6 +12,20 @@ import org.stagecraft.spy.proxy.ConnectionInfo;
  * Called on relay threads: implementations are thread-safe and quick.
  */
 public interface MessageCondition {
+
+    /**
+     * A message satisfied the condition.
+     *
+     * @param why            for people, e.g. "laser:0 min(ranges) = 0.287 m < 0.3 m"
+     * @param decidingFields the message's fields that decided it, as paths ({@code ranges[147]}), for a
+     *                       view to mark; may be empty
+     */
+    record Satisfied(String why, List<String> decidingFields) {
+        public Satisfied {
+            decidingFields = List.copyOf(decidingFields);
+        }
+    }
+
     /**
      * Whether messages with this header on this connection are ever tested (device, message type). Only
      * those are kept whole until tested; every other message passes as it comes.
@@ -20,10 +36,9 @@ public interface MessageCondition {
      * Tests one whole message that {@link #watches} accepted.
      *
      * @param payload the message's payload (after the 40-byte header)
-     * @return why it holds for people (e.g. "laser:0 min(ranges) = 0.287 m < 0.3 m"), or null when it
-     *         does not
+     * @return why it holds and what decided it, or null when it does not
      */
-    @Nullable String test(MessageHeader header, byte[] payload);
+    @Nullable Satisfied test(MessageHeader header, byte[] payload);
 
     /** The condition as the user wrote it. */
     String text();

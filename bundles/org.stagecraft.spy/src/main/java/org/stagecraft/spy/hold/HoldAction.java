@@ -1,5 +1,7 @@
 package org.stagecraft.spy.hold;
 
+import java.util.List;
+
 import org.stagecraft.player.wire.MessageHeader;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.proxy.ConnectionInfo;
@@ -18,12 +20,21 @@ import org.stagecraft.spy.proxy.ConnectionInfo;
  * @param header         the message's header
  * @param bytes          the exact message bytes (header and payload)
  * @param text           for people, e.g. "zero velocity to position2d:0 (suspended in the debugger)"
+ * @param decidingFields for a {@link HoldEntry.Action#BREAK}, the message's fields that decided the breakpoint
+ *                       ({@code ranges[147]}), for a view to mark; empty otherwise. Not in the log: a
+ *                       replayed break marks the whole triggering reading.
  */
 public record HoldAction(ConnectionInfo connection, HoldEntry.Action kind, long programOffset, long upstreamOffset,
-        MessageHeader header, byte[] bytes, String text) {
+        MessageHeader header, byte[] bytes, String text, List<String> decidingFields) {
 
     public HoldAction {
         bytes = bytes.clone();
+        decidingFields = List.copyOf(decidingFields);
+    }
+
+    public HoldAction(ConnectionInfo connection, HoldEntry.Action kind, long programOffset, long upstreamOffset,
+            MessageHeader header, byte[] bytes, String text) {
+        this(connection, kind, programOffset, upstreamOffset, header, bytes, text, List.of());
     }
 
     @Override

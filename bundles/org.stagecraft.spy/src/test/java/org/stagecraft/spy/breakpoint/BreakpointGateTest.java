@@ -54,13 +54,13 @@ class BreakpointGateTest {
             }
 
             @Override
-            public @Nullable String test(MessageHeader h, byte[] payload) {
+            public @Nullable Satisfied test(MessageHeader h, byte[] payload) {
                 if (DECODER.decode(h, payload).body() instanceof Laser.Scan s) {
                     float min = Float.POSITIVE_INFINITY;
                     for (float f : s.ranges().toArray()) {
                         min = Math.min(min, f);
                     }
-                    return min < metres ? "min " + min : null;
+                    return min < metres ? new Satisfied("min " + min, java.util.List.of()) : null;
                 }
                 return null;
             }

@@ -507,6 +507,19 @@ class RealStageHoldTest {
                     int colours = WorkbenchShot.captureDataBreakpoint(thread, png);
                     assertTrue(colours > 50, "a real picture: " + colours + " colours in " + png);
                     report("screenshot at the robot data breakpoint: " + png.toAbsolutePath());
+                    // the Robot View marks the reading: the laser, and the beam of the nearest return
+                    org.stagecraft.scene.BreakReading marked = WorkbenchShot.markedReading();
+                    float[] ranges = ((org.stagecraft.player.msg.Laser.Scan) new org.stagecraft.player.codec.PlayerDecoder(
+                            org.stagecraft.player.codec.CodecRegistry.standard()).decode(hit.header(), java.util.Arrays.copyOfRange(
+                                    hit.message(), org.stagecraft.player.wire.MessageHeader.SIZE, hit.message().length)).body()).ranges().toArray();
+                    int nearest = 0;
+                    for (int i = 1; i < ranges.length; i++) {
+                        nearest = ranges[i] < ranges[nearest] ? i : nearest;
+                    }
+                    assertTrue(marked != null && marked.device().interf() == org.stagecraft.player.msg.Laser.CODE
+                            && marked.decidingFields().equals(List.of("ranges[" + nearest + "]")),
+                            "the Robot View marks beam " + nearest + " of the laser: " + marked);
+                    report("the Robot View marks " + marked.device() + " " + marked.decidingFields() + " (" + ranges[nearest] + " m)");
                 }
                 // 1 m back along the path, for the next run
                 Sample at = poses.at(arrival + 1200 * MS);

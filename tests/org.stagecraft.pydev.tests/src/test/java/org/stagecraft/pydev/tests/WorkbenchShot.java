@@ -194,6 +194,12 @@ final class WorkbenchShot {
         return save(png, () -> true);
     }
 
+    /** The reading the workbench's Robot View marks (a robot data breakpoint's), or null (none, or no Robot View). */
+    static org.stagecraft.scene.BreakReading markedReading() {
+        return ui(() -> PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage().findView(RobotView.ID) instanceof RobotView r
+                ? r.breakReading() : null);
+    }
+
     /** Opens the views and the log, waits until they have drawn, and saves the shell's picture to {@code png}; returns its colour count. */
     static int capture(IProject project, Path png) throws Exception {
         return captureAt(project, -1, png);

@@ -12,6 +12,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.stagecraft.player.msg.Laser;
 import org.stagecraft.player.msg.Ranger;
+import org.stagecraft.scene.BreakReading;
 import org.stagecraft.scene.Camera;
 import org.stagecraft.scene.DefaultLayers;
 import org.stagecraft.scene.DeviceAddress;
@@ -19,6 +20,7 @@ import org.stagecraft.scene.LayerSpec;
 import org.stagecraft.scene.Payloads;
 import org.stagecraft.scene.Pose2;
 import org.stagecraft.scene.RobotId;
+import org.stagecraft.scene.shapes.ReadingMark;
 import org.stagecraft.scene.shapes.SensorShapes;
 import org.stagecraft.streams.StreamPattern;
 import org.stagecraft.views.FramePixels;
@@ -114,6 +116,54 @@ class PixelTest {
         }
         assertTrue(beyond >= 10, "points beyond hits checked: " + beyond);
         assertTrue(f.differingPixels(base) > 1000, "the laser layer drew");
+    }
+
+    /**
+     * Issue 27: while a robot data breakpoint holds, the view marks the reading it stopped on: the beam that
+     * decided {@code min(ranges) < ...} from the laser to its return (yellow on a black edge), and a ring around the laser;
+     * the other beams are not marked, and without a mark nothing has its colour.
+     */
+    @Test
+    void theBreakpointsReadingIsMarkedAlongItsDecidingBeam() {
+        baseline();
+        int n = scan.ranges().size(), k = 0;
+        for (int i = 1; i < n; i++) {
+            k = scan.ranges().get(i) < scan.ranges().get(k) ? i : k;
+        }
+        int opposite = (k + n / 2) % n;
+        RobotId robot = new RobotId(RecordedScene.PLAYER);
+        rec.scene.mark(new BreakReading(new DeviceAddress(robot, Laser.CODE, 0), scan, List.of("ranges[" + k + "]")));
+        int mark = 0xFFD400; // RobotScene.MARK
+        Camera c = rec.camera;
+        try {
+            FramePixels f = gl.frame(rec.scene);
+            int along = 0;
+            for (int step = 3; step <= 10; step++) { // from 30% of the beam to its return
+                double r = scan.ranges().get(k) * step / 10;
+                double x = SensorShapes.hitX(laserPose, scan.angle(k), r), y = SensorShapes.hitY(laserPose, scan.angle(k), r);
+                int col = c.pixelColumn(x), row = c.pixelRow(y);
+                if (f.contains(col, row)) {
+                    assertColour(mark, f.rgb(col, row), TOL, "beam " + k + " at " + step * 10 + "% (pixel " + col + "," + row + ")");
+                    along++;
+                }
+            }
+            assertTrue(along >= 4, "pixels checked along the deciding beam: " + along);
+            double ring = ReadingMark.RING_PIXELS * MPP;
+            int ringCol = c.pixelColumn(laserPose.x() + ring), ringRow = c.pixelRow(laserPose.y());
+            assertColour(mark, f.rgb(ringCol, ringRow), TOL, "the ring around the laser at " + ringCol + "," + ringRow);
+            double far = scan.ranges().get(opposite) * 0.7;
+            if (far > 3 * ring) { // clear of the ring
+                int col = c.pixelColumn(SensorShapes.hitX(laserPose, scan.angle(opposite), far));
+                int row = c.pixelRow(SensorShapes.hitY(laserPose, scan.angle(opposite), far));
+                assertTrue(!f.contains(col, row) || !FramePixels.close(mark, f.rgb(col, row), 40),
+                        "beam " + opposite + " (not deciding) is not marked");
+            }
+            assertTrue(f.count(mark, TOL) < 2000, "a mark, not a painted frame: " + f.count(mark, TOL) + " pixels of the mark colour");
+            rec.scene.mark(null);
+            assertEquals(0, gl.frame(rec.scene).count(mark, TOL), "no mark, no mark colour");
+        } finally {
+            rec.scene.mark(null);
+        }
     }
 
     @Test
