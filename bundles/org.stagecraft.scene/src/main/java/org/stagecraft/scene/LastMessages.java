@@ -77,6 +77,13 @@ public final class LastMessages implements AutoCloseable {
         return out;
     }
 
+    /** Forgets the streams {@code which} matches (an earlier session's robots, see {@link WorldModel#forgotten}). */
+    public void forget(java.util.function.Predicate<StreamKey> which) {
+        synchronized (latest) {
+            latest.keySet().removeIf(which);
+        }
+    }
+
     public int streams() {
         synchronized (latest) {
             return latest.size();

@@ -86,6 +86,15 @@ public final class LayerFeed implements AutoCloseable {
         onChange.run();
     }
 
+    /** Drops the streams {@code which} matches (an earlier session's robots); true if any was dropped. */
+    public boolean forget(java.util.function.Predicate<StreamKey> which) {
+        boolean any = latest.keySet().removeIf(which);
+        if (any) {
+            version.incrementAndGet();
+        }
+        return any;
+    }
+
     /** The newest message of each stream, in key order (so frames are deterministic). */
     public List<StreamMessage> snapshot() {
         List<StreamMessage> out = new ArrayList<>(latest.values());

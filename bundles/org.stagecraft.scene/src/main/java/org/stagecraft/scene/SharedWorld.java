@@ -18,10 +18,28 @@ public final class SharedWorld {
     private final WorldModel world = new WorldModel();
     private final List<Runnable> listeners = new CopyOnWriteArrayList<>();
     private final SceneFeed feed;
+    private final StreamBus.Registration releases;
 
     private SharedWorld(StreamBus bus) {
         feed = new SceneFeed(bus, world, () -> listeners.forEach(Runnable::run));
-        LastMessages.of(bus); // the layers of a view opened later start from the newest data, not from nothing
+        LastMessages last = LastMessages.of(bus); // the layers of a view opened later start from the newest data, not from nothing
+        releases = bus.onRelease((address, keys) -> {
+            world.released(keys);
+            listeners.forEach(Runnable::run);
+        });
+        // a view opened in a later session must not start from an earlier session's robots
+        listeners.add(new Runnable() {
+            private long seen;
+
+            @Override
+            public void run() {
+                long now = world.forgetting();
+                if (now != seen) {
+                    seen = now;
+                    last.forget(k -> world.forgotten(RobotId.of(k)));
+                }
+            }
+        });
     }
 
     /** The bus's shared world, created (and subscribed) on first use. */
@@ -32,6 +50,7 @@ public final class SharedWorld {
 
     private static boolean closeFeed(SharedWorld w) {
         w.feed.close();
+        w.releases.close();
         return true;
     }
 

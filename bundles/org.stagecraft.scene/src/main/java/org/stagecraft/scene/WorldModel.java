@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
@@ -26,6 +27,11 @@ import org.stagecraft.streams.StreamMessage;
  * What a Robot View knows about the world: each robot's pose (position2d state), its trail, and where its
  * devices are mounted (the geometry replies seen on the wire, defaults until then). Fed from bus threads,
  * read by the renderer on the UI thread: every accessor returns an immutable snapshot.
+ *
+ * <p>A robot whose program disconnected ({@link #released}) stays as it was last seen, for the user to look
+ * at; once a new robot appears (the next session: its ports are new) the ended robots are forgotten, with
+ * their trails and mounts, so one session's robots do not clutter the next one's view
+ * ({@link #forgetting()} counts those moments, for views to frame the new robots and drop old data).
  */
 public final class WorldModel {
     private static final int DATA = MessageType.DATA.code(), RESP_ACK = MessageType.RESP_ACK.code();
@@ -36,6 +42,11 @@ public final class WorldModel {
     private final Map<DeviceAddress, RangerConfig> configs = new ConcurrentHashMap<>();
     private final Map<DeviceAddress, MessageBody> geometries = new ConcurrentHashMap<>();
     private final AtomicLong version = new AtomicLong();
+    /** Robots whose pose stream was released (their program disconnected) and that sent no pose since. */
+    private final Set<RobotId> ended = ConcurrentHashMap.newKeySet();
+    /** Robots forgotten when a new one came; a forgotten robot that comes back is a new robot. */
+    private final Set<RobotId> forgotten = ConcurrentHashMap.newKeySet();
+    private final AtomicLong forgetting = new AtomicLong();
 
     /** @param trailLength how many past poses each robot keeps for its trail */
     public WorldModel(int trailLength) {
@@ -60,12 +71,13 @@ public final class WorldModel {
         }
         if (k.messageType() == DATA && k.deviceType() == Position2d.CODE && k.subtype() == Position2d.DATA_STATE
                 && body instanceof Position2d.State s) {
-            robots.computeIfAbsent(dev.robot(), Track::new).pose(s, trailLength);
+            arrive(dev.robot()).pose(s, trailLength);
+            ended.remove(dev.robot()); // it moves: its program (or another one on it) is connected
             changed = true;
         } else if (isGeometry(k) && body instanceof DeviceGeom g) {
             mounts.put(dev, new Mount(Pose2.of(g.pose()), finite(g.size().sl()), finite(g.size().sw()), List.of(), true));
             if (k.deviceType() == Position2d.CODE) {
-                robots.computeIfAbsent(dev.robot(), Track::new);
+                arrive(dev.robot());
             }
             changed = true;
         } else if (isGeometry(k) && body instanceof Ranger.Geom g) {
@@ -89,6 +101,57 @@ public final class WorldModel {
             version.incrementAndGet();
         }
         return changed;
+    }
+
+    /** The robot's track; a robot new to the model first makes it forget the robots that ended. */
+    private Track arrive(RobotId id) {
+        Track t = robots.get(id);
+        if (t != null) {
+            return t;
+        }
+        forgotten.remove(id);
+        if (!ended.isEmpty()) {
+            Set<RobotId> gone = Set.copyOf(ended);
+            robots.keySet().removeAll(gone);
+            mounts.keySet().removeIf(d -> gone.contains(d.robot()));
+            configs.keySet().removeIf(d -> gone.contains(d.robot()));
+            geometries.keySet().removeIf(d -> gone.contains(d.robot()));
+            ended.removeAll(gone);
+            forgotten.addAll(gone);
+            forgetting.incrementAndGet();
+        }
+        return robots.computeIfAbsent(id, Track::new);
+    }
+
+    /**
+     * The connections of these streams closed (the bus released them): a robot whose position2d state
+     * stream is among them has ended, unless it sends a pose again. It stays drawn until a new robot comes.
+     */
+    public void released(Set<StreamKey> keys) {
+        boolean any = false;
+        for (StreamKey k : keys) {
+            if (k.messageType() == DATA && k.deviceType() == Position2d.CODE && k.subtype() == Position2d.DATA_STATE) {
+                any |= robots.containsKey(RobotId.of(k)) && ended.add(RobotId.of(k));
+            }
+        }
+        if (any) {
+            version.incrementAndGet();
+        }
+    }
+
+    /** Whether the robot's program disconnected (it is drawn as last seen until a new robot comes). */
+    public boolean ended(RobotId id) {
+        return ended.contains(id);
+    }
+
+    /** Whether the robot was forgotten when a newer one came: its data is an earlier session's. */
+    public boolean forgotten(RobotId id) {
+        return forgotten.contains(id);
+    }
+
+    /** How many times a new robot made the model forget ended ones (a new session began). */
+    public long forgetting() {
+        return forgetting.get();
     }
 
     /** GET_GEOM replies of any device, and the geometry DATA messages of position2d, sonar and ranger. */

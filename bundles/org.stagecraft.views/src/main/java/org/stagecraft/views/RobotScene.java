@@ -52,6 +52,8 @@ public final class RobotScene implements AutoCloseable {
     private volatile @Nullable String overlay;
     /** The reading a robot data breakpoint stopped on, marked over the layers, or null. */
     private volatile @Nullable BreakReading mark;
+    /** The world's {@link WorldModel#forgetting()} the layers were last pruned at. */
+    private long forgettingSeen;
     private final FloatList markLines = new FloatList(), markPoints = new FloatList();
     /** The mark's colour (0xFFD400) and its edge's. */
     public static final float[] MARK = { 1f, 212 / 255f, 0f }, MARK_EDGE = { 0f, 0f, 0f };
@@ -209,6 +211,13 @@ public final class RobotScene implements AutoCloseable {
         }
         dead.forEach(r -> r.disposeGl(gl));
 
+        long forgetting = world.forgetting();
+        if (forgetting != forgettingSeen) {
+            forgettingSeen = forgetting;
+            // a new session's robots came: the last data of the robots the world forgot is an earlier session's
+            WorldModel w = world;
+            feeds.values().forEach(f -> f.forget(k -> w.forgotten(org.stagecraft.scene.RobotId.of(k))));
+        }
         camera.viewport(width, height);
         camera.track(world);
         gl.glViewport(0, 0, width, height);

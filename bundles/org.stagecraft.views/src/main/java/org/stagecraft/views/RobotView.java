@@ -86,6 +86,8 @@ public class RobotView extends ViewPart {
     private boolean dragging;
     /** A new view (no saved camera) follows the first robot it sees, wherever in the world it is. */
     private boolean followFirstRobot;
+    /** The world's {@link org.stagecraft.scene.WorldModel#forgetting()} this view last framed robots at. */
+    private long forgettingSeen;
 
     @NonNullByDefault({}) // the parameters as the unannotated library gives them
     @Override
@@ -112,6 +114,7 @@ public class RobotView extends ViewPart {
         worldListener = shared.listen(redraw::request);
         applySetup(restored != null ? restored : new ViewSetup(DefaultLayers.create(), Map.of()));
         followFirstRobot = restored == null;
+        forgettingSeen = shared.world().forgetting();
         canvas.addGLEventListener(new Drawer());
         installMouse();
         installMenu();
@@ -163,6 +166,7 @@ public class RobotView extends ViewPart {
             followHolds();
             applySetup(setup()); // new renderers and feeds: nothing drawn from the old source stays
             followFirstRobot = true; // the new source's robots may have other addresses
+            forgettingSeen = shared.world().forgetting();
             redraw.request();
         }
         describeSource();
@@ -288,6 +292,12 @@ public class RobotView extends ViewPart {
     }
 
     private void drawNow() {
+        long forgetting = scene.world().forgetting();
+        if (forgetting != forgettingSeen) {
+            // a new session began (its robots replaced the ended ones): frame its first robot, as a new view does
+            forgettingSeen = forgetting;
+            followFirstRobot = true;
+        }
         if (followFirstRobot) {
             scene.world().robots().stream().filter(RobotState::poseSeen).findFirst().ifPresent(r -> {
                 followFirstRobot = false;

@@ -232,6 +232,32 @@ class RobotViewWorkbenchTest {
         }
     }
 
+    /**
+     * Issue 24, item 5: the next session's robot is in view when it starts, wherever the user left the camera,
+     * and the earlier session's robot (its trail, its last scan) is gone from the view.
+     */
+    @Test
+    void theNextSessionsRobotIsFramedAndTheEarlierSessionsIsForgotten() throws Exception {
+        RobotView v = show("sessions");
+        GlHarness.spinUntil(() -> v.frames() > 0, 10_000, "the view's first frame");
+        RobotId first = new RobotId(replayThroughTheSpy());
+        GlHarness.spinUntil(() -> v.scene().world().ended(first), 10_000, "the first session's robot to end with its connection");
+        v.scene().camera().follow(null);
+        v.scene().camera().centreOn(100, 100); // looking elsewhere, as after panning about
+        RobotId second = new RobotId(replayThroughTheSpy());
+        assertNotEquals(first, second, "each session's Player has its own port");
+        GlHarness.spinUntil(() -> second.equals(v.scene().camera().followed()), 10_000,
+                "the view to follow the next session's robot (follows " + v.scene().camera().followed() + ")");
+        assertTrue(v.scene().world().robots().stream().noneMatch(r -> r.id().equals(first)),
+                "the earlier session's robot and its trail are gone: " + v.scene().world().robots());
+        v.requestRedraw();
+        GlHarness.spinUntil(() -> v.scene().feed("laser").snapshot().stream().noneMatch(m -> RobotId.of(m.key()).equals(first)),
+                10_000, "the earlier session's last scan to be dropped from the view");
+        FramePixels f = v.capture();
+        assertTrue(f.count(ROBOT_HEADING, 3) >= 5, "the robot is in view: " + f.count(ROBOT_HEADING, 3));
+        page.hideView(v);
+    }
+
     @Test
     void layerSetupSurvivesARestartThroughTheMemento() throws Exception {
         RobotView b = show("persisted");
