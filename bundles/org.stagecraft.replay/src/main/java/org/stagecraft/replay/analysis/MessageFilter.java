@@ -4,7 +4,10 @@ import java.util.Locale;
 import java.util.Optional;
 
 import org.eclipse.jdt.annotation.Nullable;
+import org.stagecraft.player.codec.DecodedMessage;
+import org.stagecraft.player.wire.Direction;
 import org.stagecraft.replay.log.LogMessage;
+import org.stagecraft.spy.proxy.SpyStreams;
 import org.stagecraft.streams.StreamKey;
 import org.stagecraft.streams.StreamMessage;
 import org.stagecraft.streams.StreamPattern;
@@ -70,8 +73,17 @@ public final class MessageFilter {
         return true;
     }
 
-    /** The key the entry is published under on replay, if it is published. */
+    /**
+     * The key the entry is published under on replay, if it is published; for a hold's row that carried a
+     * message (an injected command, a held-back one, a breakpoint's hit), that message's stream, so a
+     * filter on a device shows what the hold did to it.
+     */
     public static Optional<StreamKey> key(LogMessage m) {
+        if (m.kind() == LogMessage.Kind.HOLD) {
+            Direction dir = m.dir();
+            DecodedMessage d = m.decoded();
+            return d == null || dir == null ? Optional.empty() : Optional.of(SpyStreams.messageKey(m.connection(), dir, d.header()));
+        }
         return m.toStreamMessage().map(StreamMessage::key);
     }
 

@@ -35,7 +35,7 @@ public final class MessageSummary {
             case BANNER -> "banner \"" + banner(m.bytes()) + "\"";
             case UNFRAMED -> m.bytes().length + " bytes that are not a Player message"
                     + (m.text().isEmpty() ? "" : ": " + m.text());
-            case DIAGNOSTIC -> m.text();
+            case DIAGNOSTIC, HOLD -> m.text();
             case FRAME -> cut(frame(Objects.requireNonNull(m.decoded())));
         };
     }

@@ -30,17 +30,49 @@ public record MessageWindow(List<InspectorRow> rows, int anchorIndex, boolean at
     public static MessageWindow around(SessionLog log, MessageFilter filter, long anchorNanos, int before, int after,
             int scanLimit) throws IOException {
         try (LogCursor c = log.cursor(anchorNanos)) {
-            return read(c, filter, before, after, scanLimit);
+            return withHolds(read(c, filter, before, after, scanLimit), log.holdRows(), filter);
         }
     }
 
     /** The window with {@code anchor} (an entry of the log) as the first row at the anchor. */
     public static MessageWindow around(SessionLog log, MessageFilter filter, LogMessage anchor, int before, int after,
             int scanLimit) throws IOException {
+        if (anchor.kind() == LogMessage.Kind.HOLD) {
+            return around(log, filter, anchor.timeNanos(), before, after, scanLimit); // a hold's row is no cursor entry
+        }
         try (LogCursor c = log.cursor(anchor.timeNanos())) {
             c.seekTo(anchor);
-            return read(c, filter, before, after, scanLimit);
+            return withHolds(read(c, filter, before, after, scanLimit), log.holdRows(), filter);
         }
+    }
+
+    /**
+     * The window with the rows of what the robot hold did ({@link LogMessage.Kind#HOLD}) that lie within
+     * its time span (to the log's start or end where it reaches them) merged in by time, after the
+     * messages of the same time; the filter applies to them as to the messages.
+     */
+    static MessageWindow withHolds(MessageWindow w, List<LogMessage> holds, MessageFilter filter) {
+        if (holds.isEmpty() || w.rows.isEmpty() && !(w.atStart && w.atEnd)) {
+            return w;
+        }
+        long from = w.atStart ? Long.MIN_VALUE : w.rows.get(0).message().timeNanos();
+        long to = w.atEnd ? Long.MAX_VALUE : w.rows.get(w.rows.size() - 1).message().timeNanos();
+        List<InspectorRow> merged = new ArrayList<>(w.rows.size() + 16);
+        int anchor = w.anchorIndex, newAnchor = -1, i = 0, h = 0;
+        while (i < w.rows.size() || h < holds.size()) {
+            if (h == holds.size() || i < w.rows.size() && w.rows.get(i).message().timeNanos() <= holds.get(h).timeNanos()) {
+                if (i == anchor) {
+                    newAnchor = merged.size();
+                }
+                merged.add(w.rows.get(i++));
+            } else {
+                LogMessage m = holds.get(h++);
+                if (m.timeNanos() >= from && m.timeNanos() <= to && filter.matches(m)) {
+                    merged.add(new InspectorRow(m, 0));
+                }
+            }
+        }
+        return new MessageWindow(merged, newAnchor < 0 ? merged.size() : newAnchor, w.atStart, w.atEnd);
     }
 
     public boolean isEmpty() {

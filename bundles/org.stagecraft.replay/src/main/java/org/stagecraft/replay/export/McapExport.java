@@ -105,6 +105,9 @@ public final class McapExport {
                         counts[0]++;
                         m.toStreamMessage().ifPresent(scene::accept);
                     }
+                    case HOLD -> {
+                        // never among a cursor's entries (only the inspector shows them, see HoldRows)
+                    }
                     case FRAME -> {
                         w.wire(m.timeNanos(), ci.id(), ci.port(), Objects.requireNonNull(m.dir()), m.streamOffset(), LogEntry.Kind.FRAME,
                                 m.bytes(), "");

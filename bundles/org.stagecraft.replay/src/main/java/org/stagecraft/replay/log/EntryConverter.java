@@ -7,7 +7,9 @@ import org.eclipse.jdt.annotation.Nullable;
 import org.stagecraft.player.codec.CodecRegistry;
 import org.stagecraft.player.codec.DecodedMessage;
 import org.stagecraft.player.codec.PlayerDecoder;
+import org.stagecraft.player.wire.Direction;
 import org.stagecraft.player.wire.MessageHeader;
+import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.LogEntry;
 import org.stagecraft.spy.proxy.ConnectionInfo;
 
@@ -58,6 +60,39 @@ final class EntryConverter {
             case LogEntry.Wire w -> wire(w);
         };
     }
+
+    /** What the robot hold or a data breakpoint did, as a row among the messages (see {@link LogMessage.Kind#HOLD}). */
+    LogMessage hold(HoldEntry h) {
+        ConnectionInfo c = h.conn() == 0 ? SESSION : connection(h.conn(), h.port());
+        Direction dir = switch (h.action()) {
+            case INJECTED, HELD_BACK -> Direction.CLIENT_TO_SERVER;
+            case BREAK, PASSED_ON -> Direction.SERVER_TO_CLIENT;
+            default -> null;
+        };
+        byte[] bytes = h.bytes();
+        DecodedMessage d = null;
+        if (bytes.length >= MessageHeader.SIZE) {
+            MessageHeader header = MessageHeader.read(bytes, 0);
+            if (header.size() == bytes.length - MessageHeader.SIZE) { // one whole message (held-back bytes may be several)
+                d = decoder.decode(header, Arrays.copyOfRange(bytes, MessageHeader.SIZE, bytes.length));
+            }
+        }
+        return new LogMessage(h.timeNanos(), c, dir, h.programOffset(), LogMessage.Kind.HOLD, bytes, d,
+                HOLD_LABELS.get(h.action()) + h.text());
+    }
+
+    /** Rows of the session as a whole (hold on and off, the world frozen and thawed) belong to no connection. */
+    static final ConnectionInfo SESSION = new ConnectionInfo(0, 0, "session", "robot hold", "");
+
+    private static final Map<HoldEntry.Action, String> HOLD_LABELS = Map.of(
+            HoldEntry.Action.INJECTED, "injected by Stagecraft: ",
+            HoldEntry.Action.HELD_BACK, "held back from Player: ",
+            HoldEntry.Action.HOLD_ON, "robots held: ",
+            HoldEntry.Action.HOLD_OFF, "robots released: ",
+            HoldEntry.Action.BREAK, "",
+            HoldEntry.Action.PASSED_ON, "passed on to the program: ",
+            HoldEntry.Action.WORLD_FROZEN, "world frozen: ",
+            HoldEntry.Action.WORLD_THAWED, "world runs on: ");
 
     private LogMessage wire(LogEntry.Wire w) {
         ConnectionInfo c = connection(w.conn(), w.port());

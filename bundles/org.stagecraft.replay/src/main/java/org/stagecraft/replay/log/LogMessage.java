@@ -31,7 +31,14 @@ public record LogMessage(long timeNanos, ConnectionInfo connection, @Nullable Di
 
     /** What a log message is. */
     public enum Kind {
-        OPENED, CLOSED, BANNER, FRAME, UNFRAMED, DIAGNOSTIC
+        OPENED, CLOSED, BANNER, FRAME, UNFRAMED, DIAGNOSTIC,
+        /**
+         * Something Stagecraft did to the streams, from the log's hold channel (see {@link HoldRows}): a zero
+         * command it injected, a program message it held back, a robot data breakpoint's hit, a hold or a
+         * frozen world starting or ending. Shown among the messages; never replayed or exported (a cursor
+         * does not return them).
+         */
+        HOLD
     }
 
     public LogMessage {
@@ -63,7 +70,7 @@ public record LogMessage(long timeNanos, ConnectionInfo connection, @Nullable Di
                         : Optional.of(new StreamMessage(SpyStreams.diagnosticKey(connection, d), timeNanos,
                                 new SpyDiagnostic(connection, d, streamOffset, text)));
             }
-            case OPENED, CLOSED, BANNER -> Optional.empty();
+            case OPENED, CLOSED, BANNER, HOLD -> Optional.empty();
         };
     }
 

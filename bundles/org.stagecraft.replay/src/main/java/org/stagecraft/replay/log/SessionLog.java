@@ -54,6 +54,16 @@ public interface SessionLog extends AutoCloseable {
     }
 
     /**
+     * The {@link #holdEntries()} as rows for the packet inspector ({@link LogMessage.Kind#HOLD}), in log
+     * order: each with its connection, its direction (towards Player for injected and held-back program
+     * messages, towards the program for a breakpoint's hit), the message it carried decoded, and a text
+     * that says what happened.
+     */
+    default List<LogMessage> holdRows() throws IOException {
+        return List.of();
+    }
+
+    /**
      * A new cursor positioned before the first message whose time is at or after {@code timeNanos}.
      * Each cursor is independent; a cursor is used by one thread at a time.
      */

@@ -111,6 +111,12 @@ final class SpyLogSession implements SessionLog {
     }
 
     @Override
+    public List<LogMessage> holdRows() throws IOException {
+        // a held-back message is the program's own, on its row in the wire channel (marked there): not twice
+        return reader.holdEntries().stream().filter(e -> e.action() != HoldEntry.Action.HELD_BACK).map(converter::hold).toList();
+    }
+
+    @Override
     public LogCursor cursor(long timeNanos) {
         return cursor(timeNanos, SpyLogCursor.BACK_WINDOW);
     }

@@ -391,11 +391,12 @@ public final class InspectorPanel {
         if (row.gapBytes() > 0) {
             cells[7] = "[" + row.gapBytes() + " bytes missing before] " + cells[7];
         }
-        boolean held = holds.heldBack(row.message());
+        boolean own = row.message().kind() == LogMessage.Kind.HOLD; // what Stagecraft did: its text says so
+        boolean held = !own && holds.heldBack(row.message());
         if (held) {
             cells[7] = "[held back from Player by the robot hold] " + cells[7];
         }
-        boolean broke = holds.triggeredBreak(row.message());
+        boolean broke = !own && holds.triggeredBreak(row.message());
         if (broke) {
             cells[7] = "[a robot data breakpoint stopped here] " + cells[7];
         }
@@ -404,7 +405,7 @@ public final class InspectorPanel {
             item.setBackground(marked);
         } else if (broke) {
             item.setBackground(breakpointHit);
-        } else if (held) {
+        } else if (held || own) {
             item.setBackground(heldBack);
         }
     }
@@ -439,7 +440,9 @@ public final class InspectorPanel {
         }
         LogMessage m = window.rows().get(index).message();
         showDetails(m);
-        onSelect.accept(m);
+        if (m.kind() != LogMessage.Kind.HOLD) { // a hold's row is no recorded message: the replay stays where it is
+            onSelect.accept(m);
+        }
     }
 
     private void showDetails(LogMessage m) {

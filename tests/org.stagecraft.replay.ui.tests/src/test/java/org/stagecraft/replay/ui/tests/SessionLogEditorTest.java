@@ -235,6 +235,59 @@ class SessionLogEditorTest {
         throw new AssertionError("no time field");
     }
 
+    /**
+     * Issue 24, item 10: what the robot hold did is in the inspector as rows of their own among the messages
+     * (before, only bands and ticks on the timeline): the zero command it injected, decoded, in the hold's
+     * colour; choosing it shows its fields and leaves the replay where it is (it is no recorded message).
+     */
+    @Test
+    void theHoldsInjectedCommandIsARowOfItsOwn() throws Exception {
+        IFile f = TestLogs.project().getFile("holds.mcap");
+        java.nio.file.Path out = f.getLocation().toPath();
+        java.nio.file.Files.deleteIfExists(out);
+        byte[] cmd = org.stagecraft.player.codec.PlayerEncoder.encode(
+                new org.stagecraft.player.wire.MessageHeader(0, 6665, 4, 0, 2, 1, 0, 0, 0),
+                new org.stagecraft.player.msg.Position2d.CmdVel(new org.stagecraft.player.msg.Geometry.Pose2d(0.3, 0, 0), 1));
+        byte[] zero = org.stagecraft.player.codec.PlayerEncoder.encode(
+                new org.stagecraft.player.wire.MessageHeader(0, 6665, 4, 0, 2, 1, 0, 0, 0),
+                new org.stagecraft.player.msg.Position2d.CmdVel(new org.stagecraft.player.msg.Geometry.Pose2d(0, 0, 0), 1));
+        try (org.stagecraft.spy.log.SpyLogWriter w = org.stagecraft.spy.log.SpyLogWriter.create(out, java.util.Map.of())) {
+            w.connectionOpened(1_000_000, 1, "127.0.0.1:40000", "127.0.0.1:6665", "127.0.0.1:7665");
+            for (int i = 0; i < 10; i++) {
+                w.wire(2_000_000L + i * 100_000_000L, 1, 6665, org.stagecraft.player.wire.Direction.CLIENT_TO_SERVER,
+                        (long) i * cmd.length, org.stagecraft.spy.log.LogEntry.Kind.FRAME, cmd, "");
+            }
+            w.hold(new org.stagecraft.spy.log.HoldEntry(550_000_000L, 0, 0, org.stagecraft.spy.log.HoldEntry.Action.HOLD_ON, 0, 0,
+                    new byte[0], "suspended in the debugger"));
+            w.hold(new org.stagecraft.spy.log.HoldEntry(550_100_000L, 1, 6665, org.stagecraft.spy.log.HoldEntry.Action.INJECTED,
+                    6L * cmd.length, 6L * cmd.length, zero, "zero velocity to position2d:0 (suspended in the debugger)"));
+            w.connectionClosed(2_000_000_000L, 1, "done");
+        }
+        f.refreshLocal(org.eclipse.core.resources.IResource.DEPTH_ZERO, null);
+        SessionLogEditor e = open(page, f);
+        waitForInspector(e);
+        Ui.spinUntil(() -> e.inspector().window().rows().stream().anyMatch(r -> r.message().kind() == LogMessage.Kind.HOLD),
+                30_000, "the hold's rows in the inspector");
+        List<InspectorRow> rows = e.inspector().window().rows();
+        int injected = -1;
+        for (int i = 0; i < rows.size(); i++) {
+            if (rows.get(i).message().kind() == LogMessage.Kind.HOLD && rows.get(i).message().text().startsWith("injected")) {
+                injected = i;
+            }
+        }
+        assertTrue(injected > 0, "an injected row: " + rows.stream().map(r -> e.columns().summary(r.message())).toList());
+        assertTrue(rows.get(injected - 1).message().timeNanos() <= rows.get(injected).message().timeNanos()
+                && rows.get(injected + 1).message().timeNanos() >= rows.get(injected).message().timeNanos(), "in time order");
+        org.eclipse.swt.widgets.TableItem item = e.inspector().table().getItem(injected);
+        assertTrue(item.getText(7).startsWith("injected by Stagecraft: zero velocity"), item.getText(7));
+        assertEquals("position2d:0", item.getText(3), "decoded: its device");
+        assertEquals(new org.eclipse.swt.graphics.RGB(226, 214, 248), item.getBackground().getRGB(), "in the hold's colour");
+        long before = e.replayer().position();
+        e.inspector().selectRow(injected);
+        assertEquals(List.of("vel", "state"), FieldTreeContent.topNames(e.inspector().fields().getInput()), "its fields");
+        assertEquals(before, e.replayer().position(), "the replay stays where it was");
+    }
+
     @Test
     void selectingAnInspectorRowMovesTheReplayThereAndShowsTheMessage() throws Exception {
         SessionLogEditor e = open(page, TestLogs.spyLog("inspect.mcap", 64 << 10));
