@@ -16,7 +16,7 @@ import org.stagecraft.player.xdr.XdrReader;
 public final class WorldChannel implements AutoCloseable {
     private static final int GET_PROPERTY = 5;
     private static final int SET_PROPERTY = 6;
-    private static final String PROPERTY = "frozen";
+    private static final String FROZEN = "frozen", WINDOW = "window";
 
     private final DeviceRequests device;
     private final int port;
@@ -43,17 +43,22 @@ public final class WorldChannel implements AutoCloseable {
 
     /** Freezes ({@code true}) or thaws the world; returns its state after. */
     public WorldState set(boolean frozen) throws WorldException {
-        return property(SET_PROPERTY, frozen ? "1" : "0");
+        return property(SET_PROPERTY, FROZEN, frozen ? "1" : "0");
     }
 
     public WorldState get() throws WorldException {
-        return property(GET_PROPERTY, "");
+        return property(GET_PROPERTY, FROZEN, "");
     }
 
-    private WorldState property(int subtype, String value) throws WorldException {
+    /** Brings Stage's window to the front (nothing without a window: see {@link WorldState#gui()}). */
+    public WorldState raiseWindow() throws WorldException {
+        return property(SET_PROPERTY, WINDOW, "raise");
+    }
+
+    private WorldState property(int subtype, String property, String value) throws WorldException {
         ByteArray v = value.isEmpty() ? ByteArray.EMPTY : ByteArray.ofText(value);
         ByteArray name = ByteArray.ofText("stagecraft");
-        ByteArray prop = ByteArray.ofText(PROPERTY);
+        ByteArray prop = ByteArray.ofText(property);
         byte[] reply;
         try {
             reply = device.request(subtype, new Simulation.PropertyReq(name.size(), name, prop.size(), prop, 0, v.size(), v)).payload();

@@ -139,6 +139,32 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
         return fresh.set(frozenWanted);
     }
 
+    /**
+     * Brings Stage's window to the front, on the freeze's thread (after any freeze or thaw asked before).
+     * Completes with the world's state (its {@code gui} false: there is no window), or with the
+     * {@link WorldException} saying why it could not.
+     */
+    public java.util.concurrent.CompletableFuture<WorldState> raiseWindow() {
+        java.util.concurrent.CompletableFuture<WorldState> done = new java.util.concurrent.CompletableFuture<>();
+        try {
+            thread.execute(() -> {
+                try {
+                    WorldChannel c = channel;
+                    if (c == null) {
+                        c = opener.open();
+                        channel = c;
+                    }
+                    done.complete(c.raiseWindow());
+                } catch (WorldException e) {
+                    done.completeExceptionally(e);
+                }
+            });
+        } catch (java.util.concurrent.RejectedExecutionException e) {
+            done.completeExceptionally(new WorldException("the session has ended"));
+        }
+        return done;
+    }
+
     /** Thaws the world if it is frozen (a session that ends leaves no frozen world behind), then closes the channel. */
     @Override
     public void close() {

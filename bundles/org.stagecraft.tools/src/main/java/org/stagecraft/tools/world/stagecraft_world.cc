@@ -6,6 +6,8 @@
 //
 //   SET_PROPERTY prop "frozen" value "1"  stop the Stage world this Player runs; "0" lets it run on
 //   GET_PROPERTY prop "frozen"            the state
+//   SET_PROPERTY prop "window" value "raise"  brings Stage's window to the front (and out of the dock), for
+//                                         the IDE's "Show Stage's Window": another process cannot raise it
 //
 // Each is answered with the same request as ACK, its value the text
 // "<frozen 0|1> <simulated time, microseconds> <gui|headless>", or with a NACK when this Player runs
@@ -29,6 +31,7 @@
 #include <string>
 
 #include <FL/Fl.H>
+#include <FL/Fl_Window.H>
 #include <libplayercore/playercore.h>
 #include <stage.hh>
 
@@ -86,14 +89,21 @@ public:
     if (!set && !get)
       return -1;
     player_simulation_property_req_t *req = static_cast<player_simulation_property_req_t *>(data);
-    if (req->prop == NULL || std::string(req->prop, strnlen(req->prop, req->prop_count)) != "frozen")
+    const std::string prop = req->prop == NULL ? "" : std::string(req->prop, strnlen(req->prop, req->prop_count));
+    const bool window = set && prop == "window";
+    if (prop != "frozen" && !window)
       return -1;
     Stg::World *world = stageWorld();
     if (world == NULL) {
       PLAYER_ERROR("stagecraft_world: this Player runs no Stage world (no stage driver in its .cfg?)");
       return -1; // Player answers with a NACK
     }
-    if (set) {
+    if (window) {
+      // FLTK's show() of a window on screen maps and raises it (XMapRaised): the window comes to the front
+      Fl_Window *w = world->IsGUI() ? Fl::first_window() : NULL;
+      if (w != NULL)
+        w->show();
+    } else if (set) {
       const bool on = req->value != NULL && req->value_count > 0 && req->value[0] == '1';
       if (on)
         freeze(world);

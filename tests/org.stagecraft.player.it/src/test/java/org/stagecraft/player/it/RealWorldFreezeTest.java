@@ -54,6 +54,8 @@ class RealWorldFreezeTest {
     private final SessionConsole listener = new SessionConsole();
     private final List<PlayerStage.Program> programs = new ArrayList<>();
     private RobotSession session;
+    /** The X display of the session's own Xvfb, for a session with Stage's window. */
+    private int display;
 
 
     @AfterEach
@@ -72,6 +74,7 @@ class RealWorldFreezeTest {
         List<ToolSpec> tools = List.of();
         if (window) {
             int display = PlayerStage.freeDisplay();
+            this.display = display;
             tools = List.of(PlayerStage.xvfb(display));
             env.put("DISPLAY", ":" + display);
         }
@@ -182,6 +185,66 @@ class RealWorldFreezeTest {
             assertTrue(lastFreeze.text().contains("suspended in the debugger"), lastFreeze.text());
             HoldEntry on = holds.stream().filter(e -> e.action() == HoldEntry.Action.HOLD_ON).reduce((a, b) -> b).get();
             assertTrue(on.timeNanos() <= lastFreeze.timeNanos(), "the robots are held before the world freezes");
+        }
+    }
+
+    /**
+     * Issue 24, item 6: Stage's window, covered by another window (as the workbench covers it on the first
+     * click), comes to the front when asked (Show Stage's Window): the window stacking order, read from the X
+     * server with xwininfo, before and after.
+     */
+    @Test
+    void stagesWindowComesToTheFrontWhenAsked() throws Exception {
+        SessionConfig c = config(true, true);
+        session = RobotSession.start(c, listener);
+        WorldFreeze world = session.world();
+        assertTrue(world != null, session.worldProblem() + "\n" + listener);
+        assertTrue(PlayerStage.await(WAIT, () -> stacking().stream().anyMatch(RealWorldFreezeTest::isStage)),
+                "Stage's window on the display: " + stacking());
+        Process cover = new ProcessBuilder("xmessage", "-display", ":" + display, "-name", "cover", "-geometry", "1200x1000+0+0",
+                "a window over Stage's").redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        try {
+            assertTrue(PlayerStage.await(WAIT, () -> above("cover", stacking())), "the cover over Stage's window: " + stacking());
+            WorldState s = world.raiseWindow().get(10, TimeUnit.SECONDS);
+            assertTrue(s.gui(), "Stage runs with its window: " + s);
+            assertTrue(PlayerStage.await(Duration.ofSeconds(10), () -> !above("cover", stacking())),
+                    "Stage's window in front of the cover: " + stacking());
+        } finally {
+            cover.destroyForcibly();
+        }
+    }
+
+    /** Stage's window: FLTK's class, its world file in the title. */
+    private static boolean isStage(String line) {
+        return line.contains("(\"FLTK\" \"FLTK\")") && line.contains(".world");
+    }
+
+    /** Whether the window named {@code name} is above Stage's (xwininfo lists the topmost first). */
+    private static boolean above(String name, List<String> stacking) {
+        for (String line : stacking) {
+            if (line.contains("\"" + name + "\"")) {
+                return true;
+            }
+            if (isStage(line)) {
+                return false;
+            }
+        }
+        return false;
+    }
+
+    /** The root window's children, topmost first, as xwininfo prints them. */
+    private List<String> stacking() {
+        try {
+            Process p = new ProcessBuilder("xwininfo", "-display", ":" + display, "-root", "-children").redirectErrorStream(true)
+                    .start();
+            String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            p.waitFor();
+            return out.lines().filter(l -> l.trim().startsWith("0x")).toList();
+        } catch (java.io.IOException e) {
+            throw new AssertionError("xwininfo (x11-utils) is needed for this test: " + e.getMessage(), e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError(e);
         }
     }
 

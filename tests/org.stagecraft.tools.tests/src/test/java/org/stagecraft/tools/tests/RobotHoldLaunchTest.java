@@ -46,6 +46,7 @@ import org.stagecraft.tools.ui.launch.SessionHolds;
 import org.stagecraft.tools.ui.launch.SessionParts;
 import org.stagecraft.tools.ui.prefs.ToolPreferences;
 import org.stagecraft.tools.ui.view.EmergencyStopHandler;
+import org.stagecraft.tools.ui.view.ShowStageWindowHandler;
 import org.stagecraft.tools.ui.view.ToolsModel;
 
 /**
@@ -207,6 +208,25 @@ class RobotHoldLaunchTest {
         assertEquals(Duration.ofMillis(1500), hold.watchdog());
         EmergencyStop.get().engage();
         assertEquals(Map.of(HoldReason.EMERGENCY_STOP, 1), hold.reasons());
+    }
+
+    /**
+     * Issue 24, item 6: Show Stage's Window is a command of the workbench; a session that cannot raise a Stage
+     * window (here its Player is a stand-in, with no Stage world) says why instead of doing nothing. The raise
+     * itself is tested against real Stage (RealWorldFreezeTest).
+     */
+    @Test
+    void showStagesWindowSaysWhyASessionHasNoWindowToRaise() throws Exception {
+        SessionParts parts = launch(config());
+        AtomicReference<Boolean> handled = new AtomicReference<>();
+        Display.getDefault().syncExec(() -> {
+            Command c = PlatformUI.getWorkbench().getService(ICommandService.class).getCommand(ShowStageWindowHandler.COMMAND);
+            handled.set(c.isDefined() && c.isHandled());
+        });
+        assertTrue(handled.get(), "the command is contributed and handled");
+        List<String> said = ShowStageWindowHandler.raiseAll();
+        assertTrue(said.stream().anyMatch(t -> t.startsWith(parts.sessionName() + ": no world driver in this session")
+                && t.contains(parts.session().worldProblem())), said.toString());
     }
 
     @Test
