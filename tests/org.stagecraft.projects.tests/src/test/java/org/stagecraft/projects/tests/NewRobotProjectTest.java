@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeFalse;
 
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -43,12 +42,11 @@ class NewRobotProjectTest {
         Projects.clean();
     }
 
-    /** The normal run has no PyDev; the build's "pydev" profile runs these tests again with it. */
+    /** These run without PyDev; the PyDev tier (PyDevRobotProjectTest) runs the wizard with it. */
     @Test
-    void pyDevIsThereOnlyWhenTheRunSaysSo() {
-        boolean expected = Boolean.getBoolean("stagecraft.test.pydev");
-        assertEquals(expected, Platform.getBundle("org.python.pydev") != null, "PyDev in the test runtime");
-        assertEquals(expected, RobotProjects.pyDevInstalled());
+    void theseTestsRunWithoutPyDev() {
+        assertEquals(null, Platform.getBundle("org.python.pydev"), "PyDev in the test runtime");
+        assertFalse(RobotProjects.pyDevInstalled());
     }
 
     @ParameterizedTest
@@ -79,7 +77,6 @@ class NewRobotProjectTest {
 
     @Test
     void plainProjectWithoutPyDev() throws Exception {
-        assumeFalse(RobotProjects.pyDevInstalled(), "PyDev is installed: PyDevRobotProjectTest covers this run");
         IProject p = RobotProjects.create(new RobotProjects.Spec("Plain", null, ProgramTemplate.LASER_SENTINEL), null).project();
         assertEquals(List.of(), List.of(p.getDescription().getNatureIds()), "no natures without PyDev");
         assertFalse(p.getFile(PyDevProjectFile.FILE_NAME).exists(), ".pydevproject only with PyDev");

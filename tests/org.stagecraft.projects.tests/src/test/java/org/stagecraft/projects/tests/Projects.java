@@ -13,8 +13,6 @@ import org.eclipse.core.resources.IProject;
 import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.Platform;
-import org.eclipse.core.runtime.preferences.IEclipsePreferences;
-import org.eclipse.core.runtime.preferences.InstanceScope;
 import org.eclipse.debug.core.DebugPlugin;
 import org.eclipse.debug.core.ILaunchConfiguration;
 import org.eclipse.debug.core.ILaunchManager;
@@ -56,16 +54,9 @@ final class Projects {
     }
 
     /**
-     * Deletes every project and every Robot Session configuration. With PyDev in the runtime (profile
-     * pydev) it also turns off PyDev's modal questions (no interpreter is configured in the test
-     * workspace), which would otherwise block the workbench.
+     * Deletes every project and every Robot Session configuration.
      */
     static void clean() throws CoreException {
-        if (Platform.getBundle("org.python.pydev") != null) {
-            IEclipsePreferences pydev = InstanceScope.INSTANCE.getNode("org.python.pydev");
-            pydev.putBoolean("NOTIFY_NO_INTERPRETER_0", false); // "Python not configured" question
-            pydev.putBoolean("CHECK_PREFERRED_PYDEV_SETTINGS", false); // first-run settings dialog
-        }
         for (ILaunchConfiguration c : new ArrayList<>(robotSessions())) {
             c.delete();
         }

@@ -1,8 +1,7 @@
-package org.stagecraft.projects.tests;
+package org.stagecraft.pydev.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayInputStream;
 import java.nio.charset.StandardCharsets;
@@ -22,21 +21,27 @@ import org.stagecraft.projects.ui.layout.PyDevProjectFile;
 import org.stagecraft.tools.ui.launch.PythonClientPath;
 
 /**
- * With PyDev in the runtime (the build's "pydev" profile): Robot Projects are PyDev projects, and
- * PyDev itself (asked through its nature object, by reflection: PyDev is no build dependency) sees the
- * source folder and the Stagecraft client library. Skipped in the normal run.
+ * With PyDev in the runtime (the PyDev tier): Robot Projects are PyDev projects, and PyDev itself (asked
+ * through its nature object, by reflection: the wizard's bundle has no build dependency on PyDev) sees the
+ * source folder and the Stagecraft client library. (It lived in the projects tests behind a profile that
+ * nothing switched on, so CI ran 0 of its cases.)
  */
 class PyDevRobotProjectTest {
 
     @BeforeAll
-    static void pyDevOnly() {
-        assumeTrue(RobotProjects.pyDevInstalled(), "PyDev is not installed in this run (profile pydev runs these)");
+    static void pyDevWithPython3() throws Exception {
+        assertTrue(RobotProjects.pyDevInstalled(), "the PyDev tier runs with PyDev installed");
+        PyDevInterpreter.configure(PyDevInterpreter.onPath("python3")); // no "Python not configured" question
     }
 
     @BeforeEach
     @AfterEach
     void clean() throws CoreException {
-        Projects.clean();
+        for (IProject p : ResourcesPlugin.getWorkspace().getRoot().getProjects()) {
+            if (p.getName().equals("PyBot") || p.getName().equals("Existing")) {
+                p.delete(true, true, null);
+            }
+        }
     }
 
     @Test
@@ -44,7 +49,10 @@ class PyDevRobotProjectTest {
         IProject p = RobotProjects.create(new RobotProjects.Spec("PyBot", null, ProgramTemplate.LASER_SENTINEL), null).project();
         assertTrue(p.hasNature(RobotProjects.PYDEV_NATURE));
         String client = PythonClientPath.folder().orElseThrow();
-        PyDevProjectFile f = PyDevProjectFile.parse(new String(Projects.contents(p.getFile(".pydevproject")), StandardCharsets.UTF_8));
+        PyDevProjectFile f;
+        try (java.io.InputStream in = p.getFile(".pydevproject").getContents(true)) {
+            f = PyDevProjectFile.parse(new String(in.readAllBytes(), StandardCharsets.UTF_8));
+        }
         assertEquals(List.of("/${PROJECT_DIR_NAME}/src"), f.paths(PyDevProjectFile.SOURCE_PATH));
         assertEquals(List.of(client), f.paths(PyDevProjectFile.EXTERNAL_SOURCE_PATH));
         Object pathNature = pyDevPathNature(p);
