@@ -42,8 +42,11 @@ public final class WorldModel {
     private final Map<DeviceAddress, RangerConfig> configs = new ConcurrentHashMap<>();
     private final Map<DeviceAddress, MessageBody> geometries = new ConcurrentHashMap<>();
     private final AtomicLong version = new AtomicLong();
-    /** Robots whose pose stream was released (their program disconnected) and that sent no pose since. */
-    private final Set<RobotId> ended = ConcurrentHashMap.newKeySet();
+    /**
+     * The pose streams the bus released (their connection closed). A robot has ended when the stream of its
+     * newest pose is among them; the release and the last poses come on different bus threads, in either order.
+     */
+    private final Set<StreamKey> releasedPoses = ConcurrentHashMap.newKeySet();
     /** Robots forgotten when a new one came; a forgotten robot that comes back is a new robot. */
     private final Set<RobotId> forgotten = ConcurrentHashMap.newKeySet();
     private final AtomicLong forgetting = new AtomicLong();
@@ -71,8 +74,7 @@ public final class WorldModel {
         }
         if (k.messageType() == DATA && k.deviceType() == Position2d.CODE && k.subtype() == Position2d.DATA_STATE
                 && body instanceof Position2d.State s) {
-            arrive(dev.robot()).pose(s, trailLength);
-            ended.remove(dev.robot()); // it moves: its program (or another one on it) is connected
+            arrive(dev.robot()).pose(s, k, trailLength);
             changed = true;
         } else if (isGeometry(k) && body instanceof DeviceGeom g) {
             mounts.put(dev, new Mount(Pose2.of(g.pose()), finite(g.size().sl()), finite(g.size().sw()), List.of(), true));
@@ -110,13 +112,17 @@ public final class WorldModel {
             return t;
         }
         forgotten.remove(id);
-        if (!ended.isEmpty()) {
-            Set<RobotId> gone = Set.copyOf(ended);
-            robots.keySet().removeAll(gone);
+        Set<RobotId> gone = Set.copyOf(robots.keySet().stream().filter(this::ended).toList());
+        if (!gone.isEmpty()) {
+            for (RobotId g : gone) {
+                Track old = robots.remove(g);
+                if (old != null) {
+                    releasedPoses.removeAll(old.poseKeys());
+                }
+            }
             mounts.keySet().removeIf(d -> gone.contains(d.robot()));
             configs.keySet().removeIf(d -> gone.contains(d.robot()));
             geometries.keySet().removeIf(d -> gone.contains(d.robot()));
-            ended.removeAll(gone);
             forgotten.addAll(gone);
             forgetting.incrementAndGet();
         }
@@ -131,7 +137,7 @@ public final class WorldModel {
         boolean any = false;
         for (StreamKey k : keys) {
             if (k.messageType() == DATA && k.deviceType() == Position2d.CODE && k.subtype() == Position2d.DATA_STATE) {
-                any |= robots.containsKey(RobotId.of(k)) && ended.add(RobotId.of(k));
+                any |= releasedPoses.add(k);
             }
         }
         if (any) {
@@ -139,9 +145,15 @@ public final class WorldModel {
         }
     }
 
-    /** Whether the robot's program disconnected (it is drawn as last seen until a new robot comes). */
+    /**
+     * Whether the robot's program disconnected: the stream of its newest pose was released (it is drawn as
+     * last seen until a new robot comes). A pose from another connection (another program on the same robot)
+     * makes it live again.
+     */
     public boolean ended(RobotId id) {
-        return ended.contains(id);
+        Track t = robots.get(id);
+        StreamKey last = t == null ? null : t.lastPoseKey();
+        return last != null && releasedPoses.contains(last);
     }
 
     /** Whether the robot was forgotten when a newer one came: its data is an earlier session's. */
@@ -226,12 +238,24 @@ public final class WorldModel {
         private final ArrayDeque<Pose2> trail = new ArrayDeque<>();
         private Pose2 pose = Pose2.ORIGIN, velocity = Pose2.ORIGIN;
         private boolean stall, seen;
+        private @Nullable StreamKey lastPoseKey;
+        private final Set<StreamKey> poseKeys = new java.util.HashSet<>();
 
         Track(RobotId id) {
             this.id = id;
         }
 
-        synchronized void pose(Position2d.State s, int trailLength) {
+        synchronized @Nullable StreamKey lastPoseKey() {
+            return lastPoseKey;
+        }
+
+        synchronized Set<StreamKey> poseKeys() {
+            return Set.copyOf(poseKeys);
+        }
+
+        synchronized void pose(Position2d.State s, StreamKey key, int trailLength) {
+            lastPoseKey = key;
+            poseKeys.add(key);
             pose = Pose2.of(s.pos());
             velocity = Pose2.of(s.vel());
             stall = s.stall() != 0;

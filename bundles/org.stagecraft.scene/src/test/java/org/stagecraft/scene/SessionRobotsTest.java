@@ -54,6 +54,18 @@ class SessionRobotsTest {
         assertEquals(1, w.forgetting());
     }
 
+    /** The bus tells the release and delivers the last poses on different threads: either may come first. */
+    @Test
+    void aReleaseThatOvertakesTheLastPoseStillEndsTheRobot() {
+        WorldModel w = new WorldModel();
+        RobotId first = new RobotId(FIRST);
+        w.released(Set.of(pose(FIRST, FIRST_CLIENT)));
+        w.accept(at(pose(FIRST, FIRST_CLIENT), -7, -7)); // its last pose, delivered late
+        assertTrue(w.ended(first));
+        w.accept(at(pose(SECOND, SECOND_CLIENT), 1, 1));
+        assertTrue(w.forgotten(first));
+    }
+
     @Test
     void aRobotThatMovesAgainHasNotEnded() {
         WorldModel w = new WorldModel();
