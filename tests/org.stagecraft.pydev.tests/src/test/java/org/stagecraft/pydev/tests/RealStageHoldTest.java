@@ -60,6 +60,7 @@ import org.stagecraft.spy.hold.HoldReason;
 import org.stagecraft.spy.hold.HoldState;
 import org.stagecraft.spy.log.HoldEntry;
 import org.stagecraft.spy.log.SpyLogReader;
+import org.stagecraft.tests.support.ErrorLogGuard.LogsErrors;
 import org.stagecraft.tools.world.WorldFreeze;
 import org.stagecraft.tools.ui.launch.EmergencyStop;
 import org.stagecraft.tools.ui.launch.LaunchAttributes;
@@ -84,6 +85,8 @@ import org.stagecraft.tools.ui.launch.SessionParts;
  * the clock of Java's {@code System.nanoTime()} on Linux), so they compare with the arrival of the
  * debug events here. Figures go to the test output and to {@code target/hold-latency.txt}.
  */
+// PyDev logs its first analysis of a new project as an ERROR ("Info: Rebuilding internal caches"): PyDev's, not ours
+@LogsErrors({ "^org\\.python\\.pydev\\.shared_core: Info: Rebuilding internal caches" })
 @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 @TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class RealStageHoldTest {

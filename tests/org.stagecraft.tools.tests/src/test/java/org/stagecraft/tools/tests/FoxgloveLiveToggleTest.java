@@ -33,6 +33,7 @@ import org.stagecraft.spy.proxy.SpyDiagnostic;
 import org.stagecraft.spy.proxy.SpyStreams;
 import org.stagecraft.streams.StreamMessage;
 import org.stagecraft.tests.support.Await;
+import org.stagecraft.tests.support.ErrorLogGuard.LogsErrors;
 import org.stagecraft.tools.ui.foxglove.FoxgloveLive;
 import org.stagecraft.tools.ui.foxglove.FoxgloveLiveHandler;
 import org.stagecraft.tools.ui.foxglove.FoxgloveLivePreferences;
@@ -46,6 +47,7 @@ import com.google.gson.JsonParser;
  * Foxglove WebSocket protocol (a real client connects, is told the channels, gets a message), pressing
  * it again stops serving and closes the client. Port 0: the server picks a free one.
  */
+@LogsErrors({ "'127\\.0\\.0\\.1:eighty' is not HOST:PORT" })
 class FoxgloveLiveToggleTest {
     private static final Duration TIMEOUT = Duration.ofSeconds(20);
 

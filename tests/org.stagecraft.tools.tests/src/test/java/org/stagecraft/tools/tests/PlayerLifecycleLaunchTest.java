@@ -25,6 +25,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.stagecraft.tests.support.Await;
+import org.stagecraft.tests.support.ErrorLogGuard.LogsErrors;
 import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.session.RobotSession;
@@ -44,6 +45,7 @@ import com.google.gson.JsonParser;
  * SIGKILL fails the session everywhere a user looks.
  */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+@LogsErrors({ "Player failed: exited with exit code 137", "Player is gone \\(exited with exit code 137" })
 class PlayerLifecycleLaunchTest {
     private static final Duration WAIT = Duration.ofSeconds(30);
     private static final String TRACE = "pioneer-laser-sonar.gt.trace.jsonl";

@@ -59,6 +59,7 @@ import org.stagecraft.recording.peers.ReplayPeer;
 import org.stagecraft.spy.log.LogConnection;
 import org.stagecraft.spy.log.SpyLogReader;
 import org.stagecraft.tests.support.Await;
+import org.stagecraft.tests.support.ErrorLogGuard.LogsErrors;
 import org.stagecraft.tools.process.ToolState;
 import org.stagecraft.tools.session.Ports;
 import org.stagecraft.tools.session.RobotSession;
@@ -77,6 +78,7 @@ import org.stagecraft.tools.ui.view.ToolsView;
  * and serves a recorded Player conversation).
  */
 @Timeout(value = 180, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+@LogsErrors({ "flaky failed: exited with exit code 3", "bad Player configuration: .*bad\\.cfg:4", "cannot run '/nonexistent/stagecraft/player'" })
 class RobotSessionLaunchTest {
     private static final Duration WAIT = Duration.ofSeconds(40);
     private static final String TRACE = "pioneer-laser-sonar.gt.trace.jsonl";

@@ -38,6 +38,7 @@ import org.stagecraft.streams.StreamKey;
 import org.stagecraft.streams.StreamMessage;
 import org.stagecraft.streams.StreamPattern;
 import org.stagecraft.streams.Subscription;
+import org.stagecraft.tests.support.ErrorLogGuard.LogsErrors;
 
 /**
  * Reading a log again (Reload, or following a growing file) happens in the background while the editor
@@ -46,6 +47,7 @@ import org.stagecraft.streams.Subscription;
  * failure that stops play is shown in the status line.
  */
 @Timeout(180)
+@LogsErrors({ "CSV export of .*notes\\.mcap.* failed" })
 class ReloadTest {
     private final IWorkbenchPage page = PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage();
 
