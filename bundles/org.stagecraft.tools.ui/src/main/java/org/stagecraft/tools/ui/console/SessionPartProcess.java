@@ -7,6 +7,7 @@ import java.util.Map;
 import org.eclipse.debug.core.DebugEvent;
 import org.eclipse.debug.core.DebugPlugin;
 import org.eclipse.debug.core.ILaunch;
+import org.eclipse.debug.core.ILaunchesListener;
 import org.eclipse.debug.core.model.IProcess;
 import org.eclipse.debug.core.model.IStreamMonitor;
 import org.eclipse.debug.core.model.IStreamsProxy;
@@ -63,6 +64,33 @@ public final class SessionPartProcess implements IProcess {
 
     /** Adds the part to its launch (a console appears) and tells the debug model. */
     public SessionPartProcess register() {
+        DebugPlugin plugin = DebugPlugin.getDefault();
+        if (plugin != null) {
+            plugin.getLaunchManager().addLaunchListener(new ILaunchesListener() {
+                @NonNullByDefault({}) // the parameters as the unannotated library gives them
+                @Override
+                public void launchesRemoved(ILaunch[] launches) {
+                    for (ILaunch l : launches) {
+                        if (l == launch) {
+                            // its console goes with it: a part still stopping must not write to it
+                            out.detach();
+                            err.detach();
+                            plugin.getLaunchManager().removeLaunchListener(this);
+                        }
+                    }
+                }
+
+                @NonNullByDefault({})
+                @Override
+                public void launchesAdded(ILaunch[] launches) {
+                }
+
+                @NonNullByDefault({})
+                @Override
+                public void launchesChanged(ILaunch[] launches) {
+                }
+            });
+        }
         launch.addProcess(this);
         fire(DebugEvent.CREATE);
         return this;
