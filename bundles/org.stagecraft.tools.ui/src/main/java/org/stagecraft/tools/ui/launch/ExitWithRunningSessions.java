@@ -62,7 +62,10 @@ public final class ExitWithRunningSessions implements IWorkbenchListener {
         // stopped on a thread of its own while the display runs: a part that hands work to the display
         // (a view, a console) while it stops would otherwise wait for the display that waits for it
         Thread stopping = Thread.ofPlatform().name("stagecraft-exit-stop").start(RunningSessions::stopAll);
-        settle(display, () -> stopping.isAlive() || running.stream().anyMatch(p -> !p.launch().isTerminated())
+        // a launch reads as terminated as soon as its parts are, before the debug platform tells its listeners
+        // (which schedule the log's refresh): wait for the session's own end as well
+        settle(display, () -> stopping.isAlive() || running.stream().anyMatch(p -> !p.launch().isTerminated()
+                || RobotSessionLaunchDelegate.partsOf(p.launch()) != null)
                 || Job.getJobManager().find(RobotSessionLaunchDelegate.LOG_REFRESH).length > 0);
         return true;
     }

@@ -111,7 +111,6 @@ public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegat
 
             private void ended() {
                 DebugPlugin.getDefault().getLaunchManager().removeLaunchListener(this);
-                RUNNING.remove(launch);
                 parts.stopInBackground();
                 if (settings.logFolder() != null) {
                     Job refresh = new Job("Refresh spy logs") {
@@ -134,6 +133,8 @@ public final class RobotSessionLaunchDelegate extends LaunchConfigurationDelegat
                     refresh.setSystem(true);
                     refresh.schedule();
                 }
+                // last: whoever waits for the session to be done (the exit) sees the refresh scheduled by then
+                RUNNING.remove(launch);
             }
         };
         DebugPlugin.getDefault().getLaunchManager().addLaunchListener(listener);
