@@ -273,6 +273,13 @@ public final class InspectorPanel {
         if (i >= 0 && last != null) { // found: not null
             table.setSelection(i);
             table.showSelection();
+            // once more after the layout this frame may still do (the status line, a resize): GTK scrolls to
+            // the row against the size the table had when asked, which left it just below a small table
+            table.getDisplay().asyncExec(() -> {
+                if (!table.isDisposed() && table.getSelectionIndex() == i) {
+                    table.showSelection();
+                }
+            });
             showDetails(last);
         } else {
             table.deselectAll();

@@ -122,11 +122,13 @@ class SessionLogEditorTest {
         assertTrue(row >= 0 && at27.samePlace(e.inspector().window().rows().get(row).message()), "its row is selected");
         // in sight: most of the row lies inside the table's client area (counting whole rows from the top
         // index is wrong when the top row is partly scrolled away, as GTK leaves it after showSelection)
-        Rectangle rowBounds = table.getItem(row).getBounds();
-        Rectangle area = table.getClientArea();
-        Rectangle shown = rowBounds.intersection(area);
-        assertTrue(shown.height * 2 >= rowBounds.height,
-                "its row is in sight: row " + row + " at " + rowBounds + ", client area " + area + ", top " + table.getTopIndex());
+        // (waited for: the table may still be laid out and scrolled by the events of this selection)
+        Ui.spinUntil(() -> {
+            Rectangle rowBounds = table.getItem(row).getBounds();
+            Rectangle shown = rowBounds.intersection(table.getClientArea());
+            return shown.height * 2 >= rowBounds.height;
+        }, 5_000, "its row in sight: row " + row + " at " + table.getItem(row).getBounds() + ", client area "
+                + table.getClientArea() + ", top " + table.getTopIndex());
     }
 
     @Test
