@@ -51,6 +51,8 @@ public final class SessionPartProcess implements IProcess {
         }
     };
     private volatile boolean terminated;
+    /** Whether the launch manager was seen to hold the launch (see {@link #consoleMayRead()}). */
+    private volatile boolean wasRegistered;
     private volatile int exitValue;
     private volatile String status = "";
 
@@ -97,11 +99,37 @@ public final class SessionPartProcess implements IProcess {
     }
 
     public void stdout(String line) {
-        out.append(line + "\n");
+        if (consoleMayRead()) {
+            out.append(line + "\n");
+        }
     }
 
     public void stderr(String line) {
-        err.append(line + "\n");
+        if (consoleMayRead()) {
+            err.append(line + "\n");
+        }
+    }
+
+    /**
+     * False once the launch has been removed: the launch manager unregisters a launch before it tells anyone,
+     * and the debug UI disposes its consoles when told, before the listener in {@link #register()} hears of
+     * it; a line written in between went to a closed console ("Output Stream is closed" in the Error Log).
+     */
+    private boolean consoleMayRead() {
+        DebugPlugin plugin = DebugPlugin.getDefault();
+        if (plugin == null) {
+            return true;
+        }
+        if (plugin.getLaunchManager().isRegistered(launch)) {
+            wasRegistered = true;
+            return true;
+        }
+        if (wasRegistered) {
+            out.detach();
+            err.detach();
+            return false;
+        }
+        return true; // not registered yet (or never): its parts may already write, a console takes it over later
     }
 
     /** The part is down for good. */
