@@ -294,19 +294,9 @@ public final class RobotScene implements AutoCloseable {
     private void markPass(GL2 gl, float[] rgb, float lineWidth, float pointSize) {
         gl.glColor4f(rgb[0], rgb[1], rgb[2], 1);
         gl.glLineWidth(lineWidth);
-        gl.glBegin(GL.GL_LINES);
-        float[] a = markLines.array();
-        for (int i = 0; i < markLines.size(); i += 2) {
-            gl.glVertex2f(a[i], a[i + 1]);
-        }
-        gl.glEnd();
+        vertices(gl, GL.GL_LINES, markLines);
         gl.glPointSize(pointSize);
-        gl.glBegin(GL.GL_POINTS);
-        float[] p = markPoints.array();
-        for (int i = 0; i < markPoints.size(); i += 2) {
-            gl.glVertex2f(p[i], p[i + 1]);
-        }
-        gl.glEnd();
+        vertices(gl, GL.GL_POINTS, markPoints);
     }
 
     /**
@@ -378,7 +368,12 @@ public final class RobotScene implements AutoCloseable {
 
     private static void lines(GL2 gl, FloatList v, float grey) {
         gl.glColor4f(grey, grey, grey, 1);
-        gl.glBegin(GL.GL_LINES);
+        vertices(gl, GL.GL_LINES, v);
+    }
+
+    /** Draws {@code v}'s (x, y) pairs as {@code mode} (immediate mode: the grid and the mark are a few hundred vertices). */
+    private static void vertices(GL2 gl, int mode, FloatList v) {
+        gl.glBegin(mode);
         float[] a = v.array();
         for (int i = 0; i < v.size(); i += 2) {
             gl.glVertex2f(a[i], a[i + 1]);

@@ -120,15 +120,24 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
         }
     }
 
+    private WorldState request(boolean frozenWanted) throws WorldException {
+        return ask(c -> c.set(frozenWanted));
+    }
+
+    /** One request to the driver, on this thread. */
+    private interface Request {
+        WorldState send(WorldChannel channel) throws WorldException;
+    }
+
     /**
      * Asks the driver; when the channel has broken (Player was restarted by its restart policy, and with it the
      * driver), opens a new one and asks once more.
      */
-    private WorldState request(boolean frozenWanted) throws WorldException {
+    private WorldState ask(Request request) throws WorldException {
         WorldChannel c = channel;
         if (c != null) {
             try {
-                return c.set(frozenWanted);
+                return request.send(c);
             } catch (WorldException e) {
                 c.close();
                 channel = null;
@@ -136,7 +145,7 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
         }
         WorldChannel fresh = opener.open();
         channel = fresh;
-        return fresh.set(frozenWanted);
+        return request.send(fresh);
     }
 
     /**
@@ -149,12 +158,7 @@ public final class WorldFreeze implements HoldListener, AutoCloseable {
         try {
             thread.execute(() -> {
                 try {
-                    WorldChannel c = channel;
-                    if (c == null) {
-                        c = opener.open();
-                        channel = c;
-                    }
-                    done.complete(c.raiseWindow());
+                    done.complete(ask(WorldChannel::raiseWindow));
                 } catch (WorldException e) {
                     done.completeExceptionally(e);
                 }

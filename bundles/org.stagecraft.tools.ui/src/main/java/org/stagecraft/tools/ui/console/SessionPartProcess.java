@@ -7,7 +7,6 @@ import java.util.Map;
 import org.eclipse.debug.core.DebugEvent;
 import org.eclipse.debug.core.DebugPlugin;
 import org.eclipse.debug.core.ILaunch;
-import org.eclipse.debug.core.ILaunchesListener;
 import org.eclipse.debug.core.model.IProcess;
 import org.eclipse.debug.core.model.IStreamMonitor;
 import org.eclipse.debug.core.model.IStreamsProxy;
@@ -66,33 +65,6 @@ public final class SessionPartProcess implements IProcess {
 
     /** Adds the part to its launch (a console appears) and tells the debug model. */
     public SessionPartProcess register() {
-        DebugPlugin plugin = DebugPlugin.getDefault();
-        if (plugin != null) {
-            plugin.getLaunchManager().addLaunchListener(new ILaunchesListener() {
-                @NonNullByDefault({}) // the parameters as the unannotated library gives them
-                @Override
-                public void launchesRemoved(ILaunch[] launches) {
-                    for (ILaunch l : launches) {
-                        if (l == launch) {
-                            // its console goes with it: a part still stopping must not write to it
-                            out.detach();
-                            err.detach();
-                            plugin.getLaunchManager().removeLaunchListener(this);
-                        }
-                    }
-                }
-
-                @NonNullByDefault({})
-                @Override
-                public void launchesAdded(ILaunch[] launches) {
-                }
-
-                @NonNullByDefault({})
-                @Override
-                public void launchesChanged(ILaunch[] launches) {
-                }
-            });
-        }
         launch.addProcess(this);
         fire(DebugEvent.CREATE);
         return this;
@@ -111,9 +83,9 @@ public final class SessionPartProcess implements IProcess {
     }
 
     /**
-     * False once the launch has been removed: the launch manager unregisters a launch before it tells anyone,
-     * and the debug UI disposes its consoles when told, before the listener in {@link #register()} hears of
-     * it; a line written in between went to a closed console ("Output Stream is closed" in the Error Log).
+     * False once the launch has been removed, and its consoles with it: a line written to a closed console puts
+     * "Output Stream is closed" in the Error Log. Asked on every line, of the launch manager, which unregisters
+     * a launch before it tells the debug UI to dispose the consoles (a launch listener hears of it too late).
      */
     private boolean consoleMayRead() {
         DebugPlugin plugin = DebugPlugin.getDefault();
@@ -124,12 +96,7 @@ public final class SessionPartProcess implements IProcess {
             wasRegistered = true;
             return true;
         }
-        if (wasRegistered) {
-            out.detach();
-            err.detach();
-            return false;
-        }
-        return true; // not registered yet (or never): its parts may already write, a console takes it over later
+        return !wasRegistered;
     }
 
     /** The part is down for good. */

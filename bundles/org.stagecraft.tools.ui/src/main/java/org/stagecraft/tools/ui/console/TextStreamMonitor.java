@@ -17,12 +17,8 @@ public final class TextStreamMonitor implements IFlushableStreamMonitor {
     private final List<IStreamListener> listeners = new CopyOnWriteArrayList<>();
     private final StringBuilder contents = new StringBuilder();
     private boolean buffered = true;
-    private boolean detached;
 
     public synchronized void append(String text) {
-        if (detached) {
-            return;
-        }
         if (buffered) {
             contents.append(text);
         }
@@ -35,22 +31,6 @@ public final class TextStreamMonitor implements IFlushableStreamMonitor {
     @Override
     public synchronized void addListener(IStreamListener listener) {
         listeners.add(listener);
-    }
-
-    /**
-     * No console reads this stream any more (its launch was removed, and with it the console): later text goes
-     * nowhere. The console's own output stream may already be closed then, and writing to it would put an
-     * error in the Error Log (the debug UI logs it).
-     */
-    public synchronized void detach() {
-        detached = true;
-        listeners.clear();
-        contents.setLength(0);
-    }
-
-    /** Whether {@link #detach()} was called. */
-    public synchronized boolean isDetached() {
-        return detached;
     }
 
     @Override
